@@ -1,0 +1,223 @@
+# Ray-tracing course: build every step, render it, test it, measure it.
+# `make` builds and renders all steps; `make test` runs every test; `make help`
+# lists the other targets. GNU make 4, gcc, Debian packages (installed below).
+
+SHELL := /bin/bash
+.DEFAULT_GOAL := all
+.DELETE_ON_ERROR:
+.SUFFIXES:
+
+BUILD ?= build
+STEPS := 01-film 02-intersection 03-camera 04-phong 05-shadows 06-ambient \
+         07-antialiasing 08-area-lights
+PRESENT := $(filter $(STEPS),$(notdir $(wildcard steps/[0-9][0-9]-*)))
+
+# Each step's default scene (compiled into its binary; none for 01-film).
+SCENE_01-film         := scenes/film.scene
+SCENE_02-intersection := scenes/spheres.scene
+SCENE_03-camera       := scenes/spheres.scene
+SCENE_04-phong        := scenes/spheres.scene
+SCENE_05-shadows      := scenes/spheres.scene
+SCENE_06-ambient      := scenes/ambient.scene
+SCENE_07-antialiasing := scenes/antialiasing.scene
+SCENE_08-area-lights  := scenes/area-lights.scene
+
+# Each step's unit tests: tests/test_<name>.c (make test-step N runs them).
+TESTS_01-film           := film image
+TESTS_02-intersection   := ray sphere plane scene
+TESTS_03-camera         := camera parser cli
+TESTS_04-phong          := light phong
+TESTS_05-shadows        := shadows
+TESTS_06-ambient        := ambient
+TESTS_07-antialiasing   := sampler antialiasing
+TESTS_08-area-lights    := area_light
+STRESS_TESTS := $(patsubst tests/%.c,%,$(wildcard tests/stress_*.c))
+
+# ---------------------------------------------------------------- flags
+# No -ffast-math and no fused multiply-add contraction: results must not change
+# with the optimiser's mood (docs/accuracy.md).
+CC      := gcc
+OPT     ?= -O3 -march=native
+CFLAGS  := -std=c11 $(OPT) -g -fopenmp -ffp-contract=off -fno-math-errno \
+           -D_POSIX_C_SOURCE=200809L \
+           -Wall -Wextra -Wpedantic -Wshadow -Wstrict-prototypes \
+           -Wmissing-prototypes -Werror -MMD -MP -Icommon
+# pkg-config runs when a recipe needs it, after the dependency check below.
+PKG_CFLAGS = $(shell pkg-config --cflags cglm stb)
+LDLIBS  := -fopenmp -lstb -lm
+SAN ?=
+ifneq ($(SAN),)
+  CFLAGS  += -fsanitize=address,undefined -fno-omit-frame-pointer
+  LDLIBS  += -fsanitize=address,undefined
+endif
+
+# ---------------------------------------------------------------- dependencies
+# Debian packages the build, the tests and the benchmark need. Run as root, the
+# Makefile installs what is missing; otherwise it prints the command to run.
+DEB_BUILD := gcc make pkg-config libc6-dev libstb-dev libcglm-dev \
+             libcriterion-dev libmpfr-dev
+DEB_BENCH := gnuplot-nox povray hyperfine
+
+define need_debs
+missing=$$(for p in $(1); do dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null \
+    | grep -q 'install ok installed' || echo $$p; done); \
+if [ -n "$$missing" ]; then \
+  if [ "$$(id -u)" = 0 ]; then \
+    echo "make: installing Debian packages:" $$missing; \
+    apt-get update -qq && DEBIAN_FRONTEND=noninteractive \
+      apt-get install -y -qq --no-install-recommends $$missing >/dev/null \
+      || { echo "make: apt-get install failed"; exit 1; }; \
+  else \
+    echo "make: missing Debian packages. Install them with:"; \
+    echo "  sudo apt-get update && sudo apt-get install -y" $$missing; exit 1; \
+  fi; \
+fi
+endef
+
+$(BUILD)/.deps: Makefile
+	@mkdir -p $(@D)
+	@$(call need_debs,$(DEB_BUILD))
+	@touch $@
+
+deps: $(BUILD)/.deps
+bench-deps:
+	@$(call need_debs,$(DEB_BENCH))
+
+# ---------------------------------------------------------------- common library
+COMMON_SRC := $(wildcard common/*.c)
+COMMON_OBJ := $(COMMON_SRC:%.c=$(BUILD)/obj/%.o)
+LIBCOMMON  := $(BUILD)/libcommon.a
+
+$(BUILD)/obj/%.o: %.c | $(BUILD)/.deps
+	@mkdir -p $(@D)
+	@echo "CC $<"
+	@$(CC) $(CFLAGS) $(PKG_CFLAGS) -c $< -o $@
+
+$(LIBCOMMON): $(COMMON_OBJ)
+	@rm -f $@
+	@ar rcs $@ $^
+
+# ---------------------------------------------------------------- steps
+# step_rules(step): binary build/bin/STEP from steps/STEP/*.c, the default
+# scene turned into a C string, and the common library; its render in
+# build/out; its test binary build/tests/STEP.
+define step_rules
+$(1)_SRC := $$(wildcard steps/$(1)/*.c)
+$(1)_OBJ := $$($(1)_SRC:%.c=$(BUILD)/obj/%.o)
+$(1)_LIB := $$(filter-out %/main.o,$$($(1)_OBJ))
+$(BUILD)/obj/steps/$(1)/%.o: CFLAGS += -Isteps/$(1)
+
+$(BUILD)/gen/$(1)-scene.c: $(SCENE_$(1)) tools/scene2c.sh
+	@mkdir -p $$(@D)
+	@tools/scene2c.sh $(SCENE_$(1)) > $$@
+
+$(BUILD)/bin/$(1): $$($(1)_OBJ) $(BUILD)/obj/gen/$(1)-scene.o $(LIBCOMMON)
+	@mkdir -p $$(@D)
+	@echo "LD $$@"
+	@$(CC) $(CFLAGS) $$^ $(LDLIBS) -o $$@
+
+$(BUILD)/out/$(1).png: $(BUILD)/bin/$(1)
+	@mkdir -p $$(@D)
+	@$(BUILD)/bin/$(1) -o $$@
+
+$(1)_TOBJ := $$(patsubst %,$(BUILD)/obj/tests/$(1)/test_%.o,$$(TESTS_$(1))) \
+             $(BUILD)/obj/tests/$(1)/image_test.o
+$(BUILD)/obj/tests/$(1)/%.o: tests/%.c | $(BUILD)/.deps
+	@mkdir -p $$(@D)
+	@echo "CC $$<  ($(1) test)"
+	@$(CC) $(CFLAGS) $(PKG_CFLAGS) -Isteps/$(1) -Itests \
+	  -DSTEP_NAME='"$(1)"' -DBUILD_DIR='"$(BUILD)"' -c $$< -o $$@
+$(BUILD)/tests/$(1): $$($(1)_TOBJ) $$($(1)_LIB) $(LIBCOMMON) $(BUILD)/bin/$(1)
+	@mkdir -p $$(@D)
+	@echo "LD $$@"
+	@$(CC) $(CFLAGS) $$(filter %.o %.a,$$^) $(LDLIBS) -lcriterion -lmpfr -lgmp -o $$@
+endef
+$(foreach s,$(PRESENT),$(eval $(call step_rules,$(s))))
+
+$(BUILD)/obj/gen/%.o: $(BUILD)/gen/%.c | $(BUILD)/.deps
+	@mkdir -p $(@D)
+	@$(CC) $(CFLAGS) -c $< -o $@
+
+BINS    := $(PRESENT:%=$(BUILD)/bin/%)
+RENDERS := $(PRESENT:%=$(BUILD)/out/%.png)
+TESTBIN := $(PRESENT:%=$(BUILD)/tests/%)
+
+all: $(BINS) $(RENDERS)
+build: $(BINS)
+
+# ---------------------------------------------------------------- tests
+STRESS_OBJ := $(STRESS_TESTS:%=$(BUILD)/obj/tests/stress/%.o)
+$(BUILD)/obj/tests/stress/%.o: tests/%.c | $(BUILD)/.deps
+	@mkdir -p $(@D)
+	@echo "CC $<  (stress)"
+	@$(CC) $(CFLAGS) $(PKG_CFLAGS) -Itests -DBUILD_DIR='"$(BUILD)"' -c $< -o $@
+$(BUILD)/tests/stress: $(STRESS_OBJ) $(LIBCOMMON)
+	@mkdir -p $(@D)
+	@echo "LD $@"
+	@$(CC) $(CFLAGS) $^ $(LDLIBS) -lcriterion -lmpfr -lgmp -o $@
+STRESSBIN := $(if $(STRESS_TESTS),$(BUILD)/tests/stress)
+
+test: $(TESTBIN) $(STRESSBIN)
+	@tests/run.sh $(TESTBIN) $(STRESSBIN)
+
+stress: $(STRESSBIN)
+	@tests/run.sh --verbose $(STRESSBIN)
+
+# make test-step N  (or N=3): one step's unit tests and image test.
+ifeq (test-step,$(firstword $(MAKECMDGOALS)))
+  N ?= $(word 2,$(MAKECMDGOALS))
+  $(eval $(word 2,$(MAKECMDGOALS)):;@:)
+endif
+N_PAD = $(shell n='$(N)'; [[ "$$n" =~ ^[0-9]+$$ ]] && printf %02d $$((10\#$$n)))
+STEP_N = $(filter $(N_PAD)-%,$(STEPS))
+test-step:
+	@if [ -z "$(N)" ]; then echo "usage: make test-step N   (N = 1 .. 8)"; exit 2; fi
+	@if [ -z "$(STEP_N)" ]; then echo "make test-step: there is no step '$(N)' (steps are 1 .. 8)"; exit 2; fi
+	@if [ -z "$(filter $(STEP_N),$(PRESENT))" ]; then \
+	  echo "make test-step: step $(STEP_N) does not exist yet (no steps/$(STEP_N)/)"; exit 1; fi
+	@$(MAKE) --no-print-directory $(BUILD)/tests/$(STEP_N)
+	@tests/run.sh --verbose $(BUILD)/tests/$(STEP_N)
+
+sanitize:
+	$(MAKE) BUILD=build/san SAN=1 OPT=-O1 test
+
+# ---------------------------------------------------------------- images, diffs
+# Reference images: each step's default scene at the reference size. Only on
+# purpose: they are what the image tests compare against.
+IMG_SIZE := --width 320 --height 240
+images: $(BINS)
+	@for s in $(PRESENT); do \
+	  if [ $$s = 01-film ]; then size=""; else size="$(IMG_SIZE)"; fi; \
+	  $(BUILD)/bin/$$s $$size --threads 2 -o images/$$s.png || exit 1; done
+
+diffs:
+	@tools/diffs.sh write $(PRESENT)
+check-diffs:
+	@tools/diffs.sh check $(PRESENT)
+
+# ---------------------------------------------------------------- benchmark
+bench: bench-deps $(BINS)
+	@bench/run.sh
+
+clean:
+	rm -rf $(BUILD)
+
+help:
+	@echo "make              build every step and render its default scene to $(BUILD)/out/"
+	@echo "make test         run every unit, stress and image test"
+	@echo "make test-step N  run step N's unit tests and image test (N = 1 .. 8)"
+	@echo "make stress       run the numerical stress tests alone"
+	@echo "make sanitize     run the whole suite under AddressSanitizer + UBSan"
+	@echo "make bench        measure speed and error, write docs/benchmarks.md"
+	@echo "make images       regenerate the reference images in images/ (on purpose only)"
+	@echo "make diffs        write docs/diffs/NN-name.diff (each step against the previous)"
+	@echo "make starter      write the student starter tree to $(BUILD)/starter"
+	@echo "make clean        remove $(BUILD)/"
+
+starter:
+	@tools/starter.sh $(BUILD)/starter
+
+.PHONY: all build deps bench-deps test stress test-step sanitize images diffs \
+        check-diffs bench clean help starter
+
+-include $(shell find $(BUILD)/obj -name '*.d' 2>/dev/null)

@@ -1,0 +1,118 @@
+/* A step's whole program around its pixel function (step 01 on): options,
+ * scene, render, save, summary. README.md describes the command line. */
+#include "app.h"
+
+#include <stdio.h>
+#include <string.h>
+
+#include "cli.h"
+#include "parser.h"
+#include "sampler.h"
+
+/* Say once what the step leaves out of this scene or command line. */
+static void say_ignored(const Step *step, const Options *o, unsigned ignored)
+{
+  static const struct {
+    unsigned bit;
+    const char *what;
+  } parts[] = {
+      {SCENE_LIGHTS, "the lights (shading starts in step 04)"},
+      {SCENE_AMBIENT, "the ambient light (step 06)"},
+      {SCENE_LIGHT_SHAPES, "the point lights' radius: the camera sees lights from step 06"},
+      {SCENE_SAMPLES, "samples > 1 (antialiasing is step 07)"},
+      {SCENE_AREA_LIGHTS, "the area lights and light_samples (step 08)"},
+  };
+  for (size_t k = 0; k < sizeof parts / sizeof parts[0]; k++)
+    if (ignored & parts[k].bit)
+      fprintf(stderr, "%s: ignoring %s\n", step->name, parts[k].what);
+  bool sampling = step->features & SCENE_SAMPLES;
+  if (!sampling && (o->samples || o->sampler || o->adaptive >= 0.0f || o->seed != 1))
+    fprintf(stderr, "%s: ignoring --samples, --sampler, --adaptive and --seed "
+            "(antialiasing is step 07)\n", step->name);
+  if (!(step->features & SCENE_AREA_LIGHTS) && o->light_samples)
+    fprintf(stderr, "%s: ignoring --light-samples (step 08)\n", step->name);
+}
+
+static bool load(const Step *step, const Options *o, Scene *scene)
+{
+  scene_init(scene);
+  if (o->scene_path)
+    return parser_load_file(o->scene_path, scene);
+  return parser_load_string(*app_default_scene_name ? app_default_scene_name : step->name,
+                            app_default_scene, scene);
+}
+
+/* Command-line values win over the scene's. */
+static bool override(const Step *step, const Options *o, Scene *scene)
+{
+  if (o->width)
+    scene->width = o->width;
+  if (o->height)
+    scene->height = o->height;
+  if ((long long)scene->width * scene->height > FILM_MAX_PIXELS) {
+    fprintf(stderr, "%s: expected at most %d pixels, found %dx%d\n", step->name,
+            FILM_MAX_PIXELS, scene->width, scene->height);
+    return false;
+  }
+  if (o->samples && (step->features & SCENE_SAMPLES))
+    scene->samples = o->samples;
+  if (o->light_samples && (step->features & SCENE_AREA_LIGHTS))
+    scene->light_samples = o->light_samples;
+  return true;
+}
+
+static void summary(const Step *step, const char *out, const Film *film,
+                    const Scene *scene, const RenderStats *st)
+{
+  double mrays = (double)st->rays * 1e-6;
+  printf("%s: %s %dx%d, %d spp, %.2f Mrays in %.3f s (%.1f Mrays/s, %d thread%s)\n",
+         step->name, out, film->width, film->height, scene->samples, mrays,
+         st->seconds, st->seconds > 0.0 ? mrays / st->seconds : 0.0, st->threads,
+         st->threads == 1 ? "" : "s");
+}
+
+int app_run(int argc, char **argv, const Step *step)
+{
+  Options o;
+  switch (cli_parse(argc, argv, step->name, step->summary, app_default_scene_name, &o)) {
+  case CLI_DONE: return 0;
+  case CLI_USAGE: return 2;
+  case CLI_RUN: break;
+  }
+  Scene scene;
+  if (!load(step, &o, &scene))
+    return 1;
+  if (!override(step, &o, &scene)) {
+    scene_free(&scene);
+    return 2;
+  }
+  say_ignored(step, &o, 0);
+  if (!scene_prepare(&scene, step->features)) {
+    scene_free(&scene);
+    return 1;
+  }
+  say_ignored(step, &(Options){.seed = 1, .adaptive = -1.0f}, scene.info.ignored);
+  SamplerKind kind = SAMPLER_CENTER;
+  sampler_parse(o.sampler ? o.sampler : step->sampler ? step->sampler : "center", &kind);
+  RenderSettings set = {.threads = o.threads, .seed = o.seed, .samples = scene.samples,
+                        .light_samples = scene.light_samples, .sampler = (int)kind,
+                        .adaptive = o.adaptive > 0.0f ? o.adaptive : 0.0f,
+                        .progress = !o.quiet};
+  Film film;
+  char default_out[96];
+  snprintf(default_out, sizeof default_out, "%s.png", step->name);
+  const char *out = o.out_path ? o.out_path : default_out;
+  int status = 1;
+  if (film_init(&film, scene.width, scene.height)) {
+    RenderStats st;
+    render(&scene, &film, step->pixel, &set, &st);
+    if (film_save(&film, out, o.tonemap)) {
+      status = 0;
+      if (!o.quiet)
+        summary(step, out, &film, &scene, &st);
+    }
+    film_free(&film);
+  }
+  scene_free(&scene);
+  return status;
+}

@@ -1,0 +1,24 @@
+/* What every step's main does: parse the command line, load the scene (or the
+ * step's default one), render it with the step's pixel function, save the
+ * film, print a summary line. Introduced in step 01; README.md. */
+#ifndef RT_APP_H
+#define RT_APP_H
+
+#include "render.h"
+
+typedef struct Step {
+  const char *name;      /* "04-phong" */
+  const char *summary;   /* one line for --help */
+  unsigned features;     /* SceneFeature bits the step renders */
+  const char *sampler;   /* default sampler name, NULL when the step has none */
+  RenderPixelFn pixel;   /* the step's per-pixel work */
+} Step;
+
+/* The default scene text, compiled in from scenes/ by tools/scene2c.sh. */
+extern const char app_default_scene[];
+extern const char app_default_scene_name[];
+
+/* Run the step; returns main's exit status (0 ok, 1 failure, 2 usage). */
+int app_run(int argc, char **argv, const Step *step);
+
+#endif

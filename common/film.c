@@ -1,0 +1,82 @@
+/* Film: linear float RGB pixels, the lecture's sample positions, export
+ * (step 01). docs/01-film.md. */
+#include "film.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+
+bool film_init(Film *film, int width, int height)
+{
+  film->width = width;
+  film->height = height;
+  film->rgb = calloc((size_t)width * height * 3, sizeof *film->rgb);
+  if (!film->rgb) {
+    fprintf(stderr, "film: out of memory for %dx%d pixels\n", width, height);
+    film->width = film->height = 0;
+    return false;
+  }
+  return true;
+}
+
+void film_free(Film *film)
+{
+  free(film->rgb);
+  film->rgb = NULL;
+  film->width = film->height = 0;
+}
+
+vec2s film_sample(const Film *film, int i, int j)
+{
+  /* BEGIN SOLUTION step 01 */
+  vec2s s = {.x = ((float)i + 0.5f) / (float)film->width,
+             .y = ((float)j + 0.5f) / (float)film->height};
+  return s;
+  /* STUB: return (vec2s){.x = 0.0f, .y = 0.0f}; */
+  /* END SOLUTION */
+}
+
+void film_set(Film *film, int i, int j, vec3s c)
+{
+  float *px = film->rgb + 3 * ((size_t)j * film->width + i);
+  px[0] = c.r;
+  px[1] = c.g;
+  px[2] = c.b;
+}
+
+vec3s film_get(const Film *film, int i, int j)
+{
+  const float *px = film->rgb + 3 * ((size_t)j * film->width + i);
+  return vec_make(px[0], px[1], px[2]);
+}
+
+bool film_save(const Film *film, const char *path, Tonemap tm)
+{
+  return image_save(path, film->width, film->height, film->rgb, tm);
+}
+
+/* Neumaier's variant of Kahan summation, per channel: the rounding error of
+ * every addition is kept in `comp` and added back at the end. */
+static void accum1(float *sum, float *comp, float x)
+{
+  float t = *sum + x;
+  if (fabsf(*sum) >= fabsf(x))
+    *comp += (*sum - t) + x;
+  else
+    *comp += (x - t) + *sum;
+  *sum = t;
+}
+
+void film_accum_add(FilmAccum *acc, vec3s c)
+{
+  accum1(&acc->sum.r, &acc->comp.r, c.r);
+  accum1(&acc->sum.g, &acc->comp.g, c.g);
+  accum1(&acc->sum.b, &acc->comp.b, c.b);
+  acc->n++;
+}
+
+vec3s film_accum_mean(const FilmAccum *acc)
+{
+  if (acc->n == 0)
+    return glms_vec3_zero();
+  return glms_vec3_divs(glms_vec3_add(acc->sum, acc->comp), (float)acc->n);
+}

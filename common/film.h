@@ -1,0 +1,45 @@
+/* Film: a w x h grid of linear float RGB pixels (step 01). Pixel (i, j) has i
+ * from the left and j from the bottom; its centre sample is
+ * ((i + 0.5)/w, (j + 0.5)/h). Bytes appear only at export. docs/01-film.md. */
+#ifndef RT_FILM_H
+#define RT_FILM_H
+
+#include <stdbool.h>
+#include "image.h"
+#include "vec.h"
+
+typedef struct Film {
+  int width, height;
+  float *rgb; /* width * height * 3 floats, row j = 0 first; owned */
+} Film;
+
+/* Film limits the parser and command line enforce. */
+enum { FILM_MAX_SIDE = 16384, FILM_MAX_PIXELS = 16777216 };
+
+/* Allocate a black film. Prints one line and returns false when out of memory. */
+bool film_init(Film *film, int width, int height);
+
+/* Free the pixels; a second call is harmless. */
+void film_free(Film *film);
+
+/* The lecture's GetSample: normalized coordinates of pixel (i, j)'s centre. */
+vec2s film_sample(const Film *film, int i, int j);
+
+/* Set / get pixel (i, j). */
+void film_set(Film *film, int i, int j, vec3s c);
+vec3s film_get(const Film *film, int i, int j);
+
+/* Save through image_save (format from the extension, atomic). */
+bool film_save(const Film *film, const char *path, Tonemap tm);
+
+/* Compensated (Kahan-Babuska-Neumaier) sum of colour samples: the mean of
+ * millions of samples keeps float precision (docs/accuracy.md). */
+typedef struct FilmAccum {
+  vec3s sum, comp;
+  unsigned n;
+} FilmAccum;
+
+void film_accum_add(FilmAccum *acc, vec3s c);
+vec3s film_accum_mean(const FilmAccum *acc);
+
+#endif

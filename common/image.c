@@ -1,0 +1,268 @@
+/* Image files and comparison (step 01): tone maps, atomic writes (temporary
+ * file, then rename), PFM by hand, PNG/JPG/HDR through stb. docs/01-film.md. */
+#include "image.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <stb_image.h>
+#include <stb_image_write.h>
+
+bool image_tonemap_parse(const char *name, Tonemap *out)
+{
+  static const char *const names[] = {"clamp", "srgb", "reinhard"};
+  for (int k = 0; k < 3; k++) {
+    if (strcmp(name, names[k]) == 0) {
+      *out = (Tonemap)k;
+      return true;
+    }
+  }
+  return false;
+}
+
+/* The sRGB transfer curve (IEC 61966-2-1) for linear c in [0, 1]. */
+static float srgb_encode(float c)
+{
+  return c <= 0.0031308f ? 12.92f * c : 1.055f * powf(c, 1.0f / 2.4f) - 0.055f;
+}
+
+unsigned char image_to_byte(float c, Tonemap tm)
+{
+  /* BEGIN SOLUTION step 01 */
+  if (!(c > 0.0f)) /* also maps NaN to 0 */
+    return 0;
+  if (tm == TONEMAP_REINHARD)
+    c = c / (1.0f + c);
+  if (c > 1.0f)
+    c = 1.0f;
+  if (tm != TONEMAP_CLAMP)
+    c = srgb_encode(c);
+  /* Round to nearest: the lecture truncates, which darkens by half a code. */
+  return (unsigned char)lrintf(255.0f * c);
+  /* STUB: return 0; */
+  /* END SOLUTION */
+}
+
+/* Output file being written under a temporary name beside its final one. */
+typedef struct Out {
+  FILE *f;
+  bool failed;
+} Out;
+
+static void out_write(void *ctx, void *data, int size)
+{
+  Out *out = ctx;
+  if (!out->failed && fwrite(data, 1, (size_t)size, out->f) != (size_t)size)
+    out->failed = true;
+}
+
+static const char *extension(const char *path)
+{
+  const char *dot = strrchr(path, '.');
+  const char *slash = strrchr(path, '/');
+  return (dot && (!slash || dot > slash)) ? dot + 1 : "";
+}
+
+/* Bytes of the picture, upright (top row first), tone mapped. */
+static unsigned char *to_bytes(int w, int h, const float *rgb, Tonemap tm)
+{
+  unsigned char *px = malloc((size_t)w * h * 3);
+  if (!px)
+    return NULL;
+  for (int j = 0; j < h; j++) {
+    const float *row = rgb + (size_t)(h - 1 - j) * w * 3;
+    for (int k = 0; k < w * 3; k++)
+      px[(size_t)j * w * 3 + k] = image_to_byte(row[k], tm);
+  }
+  return px;
+}
+
+/* PFM: header, then little-endian floats, bottom row first (the film's own
+ * order). A negative scale says little-endian. */
+static void write_pfm(Out *out, int w, int h, const float *rgb)
+{
+  char head[64];
+  int n = snprintf(head, sizeof head, "PF\n%d %d\n-1.0\n", w, h);
+  out_write(out, head, n);
+  for (size_t k = 0; k < (size_t)w * h * 3; k++) {
+    uint32_t bits;
+    memcpy(&bits, &rgb[k], 4);
+    unsigned char le[4] = {bits & 0xff, (bits >> 8) & 0xff, (bits >> 16) & 0xff,
+                           bits >> 24};
+    out_write(out, le, 4);
+  }
+}
+
+/* Encode into `out`; false when the format is unknown or memory is short. */
+static bool encode(Out *out, const char *ext, int w, int h, const float *rgb,
+                   Tonemap tm)
+{
+  if (strcmp(ext, "pfm") == 0) {
+    write_pfm(out, w, h, rgb);
+    return true;
+  }
+  if (strcmp(ext, "hdr") == 0) {
+    float *up = malloc((size_t)w * h * 3 * sizeof *up);
+    if (!up)
+      return false;
+    for (int j = 0; j < h; j++)
+      memcpy(up + (size_t)j * w * 3, rgb + (size_t)(h - 1 - j) * w * 3,
+             (size_t)w * 3 * sizeof *up);
+    int ok = stbi_write_hdr_to_func(out_write, out, w, h, 3, up);
+    free(up);
+    return ok != 0;
+  }
+  unsigned char *px = to_bytes(w, h, rgb, tm);
+  if (!px)
+    return false;
+  int ok = strcmp(ext, "png") == 0
+               ? stbi_write_png_to_func(out_write, out, w, h, 3, px, w * 3)
+               : stbi_write_jpg_to_func(out_write, out, w, h, 3, px, 95);
+  free(px);
+  return ok != 0;
+}
+
+bool image_save(const char *path, int w, int h, const float *rgb, Tonemap tm)
+{
+  const char *ext = extension(path);
+  if (strcmp(ext, "png") && strcmp(ext, "jpg") && strcmp(ext, "jpeg") &&
+      strcmp(ext, "hdr") && strcmp(ext, "pfm")) {
+    fprintf(stderr, "image: cannot write '%s': unknown extension '.%s' "
+                    "(expected .png, .jpg, .hdr or .pfm)\n", path, ext);
+    return false;
+  }
+  size_t len = strlen(path);
+  char *tmp = malloc(len + 16);
+  if (!tmp)
+    return false;
+  snprintf(tmp, len + 16, "%s.tmp.XXXXXX", path);
+  int fd = mkstemp(tmp);
+  Out out = {fd >= 0 ? fdopen(fd, "wb") : NULL, false};
+  if (!out.f) {
+    fprintf(stderr, "image: cannot write '%s': %s\n", path, strerror(errno));
+    if (fd >= 0) {
+      close(fd);
+      unlink(tmp);
+    }
+    free(tmp);
+    return false;
+  }
+  fchmod(fd, 0644);
+  bool ok = encode(&out, ext, w, h, rgb, tm) && !out.failed;
+  int saved_errno = out.failed ? errno : ENOMEM;
+  if (fclose(out.f) != 0 && ok) {
+    ok = false;
+    saved_errno = errno;
+  }
+  if (ok && rename(tmp, path) != 0) {
+    ok = false;
+    saved_errno = errno;
+  }
+  if (!ok) {
+    fprintf(stderr, "image: cannot write '%s': %s\n", path, strerror(saved_errno));
+    unlink(tmp);
+  }
+  free(tmp);
+  return ok;
+}
+
+/* Read a PFM (either endianness, 1 or 3 channels) into RGB floats. */
+static bool load_pfm(FILE *f, const char *path, int *w, int *h, float **rgb)
+{
+  char kind[3] = {0};
+  float scale;
+  if (fscanf(f, "%2s %d %d %f", kind, w, h, &scale) != 4 || fgetc(f) == EOF ||
+      (strcmp(kind, "PF") && strcmp(kind, "Pf")) || *w <= 0 || *h <= 0 ||
+      (long long)*w * *h > (1ll << 28) || scale == 0.0f) {
+    fprintf(stderr, "image: '%s' is not a PFM file\n", path);
+    return false;
+  }
+  int ch = kind[1] == 'F' ? 3 : 1;
+  size_t n = (size_t)*w * *h;
+  float *px = malloc(n * 3 * sizeof *px);
+  unsigned char *raw = malloc(n * ch * 4);
+  bool ok = px && raw && fread(raw, 4, n * ch, f) == n * ch;
+  for (size_t k = 0; ok && k < n * 3; k++) {
+    const unsigned char *b = raw + 4 * (ch == 3 ? k : k / 3);
+    uint32_t bits = scale < 0 ? (uint32_t)b[0] | b[1] << 8 | b[2] << 16 | (uint32_t)b[3] << 24
+                              : (uint32_t)b[3] | b[2] << 8 | b[1] << 16 | (uint32_t)b[0] << 24;
+    memcpy(&px[k], &bits, 4);
+  }
+  free(raw);
+  if (!ok) {
+    fprintf(stderr, "image: '%s' is truncated\n", path);
+    free(px);
+    return false;
+  }
+  *rgb = px;
+  return true;
+}
+
+bool image_load(const char *path, int *w, int *h, float **rgb)
+{
+  FILE *f = fopen(path, "rb");
+  if (!f) {
+    fprintf(stderr, "image: cannot read '%s': %s\n", path, strerror(errno));
+    return false;
+  }
+  bool ok;
+  if (strcmp(extension(path), "pfm") == 0) {
+    ok = load_pfm(f, path, w, h, rgb);
+  } else {
+    int n;
+    unsigned char *px = stbi_load_from_file(f, w, h, &n, 3);
+    ok = px != NULL;
+    if (!ok)
+      fprintf(stderr, "image: cannot read '%s': %s\n", path, stbi_failure_reason());
+    else if (!(*rgb = malloc((size_t)*w * *h * 3 * sizeof **rgb)))
+      ok = false;
+    for (int j = 0; ok && j < *h; j++) /* flip to the film's bottom-up rows */
+      for (int k = 0; k < *w * 3; k++)
+        (*rgb)[(size_t)j * *w * 3 + k] = px[(size_t)(*h - 1 - j) * *w * 3 + k] / 255.0f;
+    stbi_image_free(px);
+  }
+  fclose(f);
+  return ok;
+}
+
+ImageDiff image_compare(int w, int h, const float *a, const float *b, float tol)
+{
+  ImageDiff d = {0.0, 0.0f, 0};
+  size_t n = (size_t)w * h * 3;
+  for (size_t k = 0; k < n; k++) {
+    float e = fabsf(a[k] - b[k]);
+    if (!(e <= tol)) /* NaN counts as over */
+      d.over++;
+    if (e > d.max_abs || e != e)
+      d.max_abs = e;
+    d.rmse += (double)e * e;
+  }
+  d.rmse = n ? sqrt(d.rmse / (double)n) : 0.0;
+  return d;
+}
+
+bool image_save_diff(const char *path, int w, int h, const float *a,
+                     const float *b, float tol, float gain)
+{
+  float *px = malloc((size_t)w * h * 3 * sizeof *px);
+  if (!px)
+    return false;
+  for (size_t p = 0; p < (size_t)w * h; p++) {
+    float e = 0.0f;
+    for (int c = 0; c < 3; c++)
+      e = fmaxf(e, fabsf(a[3 * p + c] - b[3 * p + c]));
+    bool over = !(e <= tol);
+    px[3 * p + 0] = over ? 1.0f : gain * e;
+    px[3 * p + 1] = over ? 0.0f : gain * e;
+    px[3 * p + 2] = over ? 0.0f : gain * e;
+  }
+  bool ok = image_save(path, w, h, px, TONEMAP_CLAMP);
+  free(px);
+  return ok;
+}

@@ -1,0 +1,45 @@
+/* Image files and image comparison (step 01): tone maps, atomic writes of
+ * PNG/JPG/HDR through stb and of PFM by hand, loading, per-pixel comparison.
+ * docs/01-film.md. Pixel buffers are RGB floats, rows from the bottom (j = 0)
+ * like the film; files are written upright. */
+#ifndef RT_IMAGE_H
+#define RT_IMAGE_H
+
+#include <stdbool.h>
+
+typedef enum Tonemap {
+  TONEMAP_CLAMP,    /* byte = round(255 clamp(c, 0, 1)), the lecture's mapping */
+  TONEMAP_SRGB,     /* clamp, then the sRGB transfer curve */
+  TONEMAP_REINHARD, /* c / (1 + c), then sRGB */
+} Tonemap;
+
+/* Parse "clamp", "srgb" or "reinhard"; false when unknown. */
+bool image_tonemap_parse(const char *name, Tonemap *out);
+
+/* The byte a linear value maps to under `tm`. */
+unsigned char image_to_byte(float c, Tonemap tm);
+
+/* Write w x h RGB floats to `path`, format from its extension (.png, .jpg,
+ * .hdr, .pfm). The file is written to a temporary name and renamed, so an
+ * existing file is replaced only by a complete one. .hdr and .pfm keep the
+ * linear floats (no tone map). Prints one line and returns false on failure. */
+bool image_save(const char *path, int w, int h, const float *rgb, Tonemap tm);
+
+/* Load a .png (bytes / 255, no tone map undone) or .pfm (exact floats) into a
+ * new buffer the caller frees with free(). Prints one line, false on failure. */
+bool image_load(const char *path, int *w, int *h, float **rgb);
+
+typedef struct ImageDiff {
+  double rmse;        /* root mean square over all channels */
+  float max_abs;      /* largest per-channel difference */
+  long over;          /* channels whose difference exceeds the tolerance */
+} ImageDiff;
+
+/* Compare two same-size buffers channel by channel against `tol`. */
+ImageDiff image_compare(int w, int h, const float *a, const float *b, float tol);
+
+/* Write a diff picture: |a - b| scaled by `gain`, red where over `tol`. */
+bool image_save_diff(const char *path, int w, int h, const float *a,
+                     const float *b, float tol, float gain);
+
+#endif

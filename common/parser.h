@@ -1,0 +1,17 @@
+/* Scene-file parser (the format of docs/scene-format.md). Every error is one
+ * line `FILE:LINE:COL: expected ..., found ...`. Introduced in step 02. */
+#ifndef RT_PARSER_H
+#define RT_PARSER_H
+
+#include <stdbool.h>
+#include "scene.h"
+
+/* Parse scene text into `scene` (which must be freshly scene_init'ed); `file`
+ * names the text in messages. On error prints one line to stderr, frees what
+ * was built and returns false. */
+bool parser_load_string(const char *file, const char *text, Scene *scene);
+
+/* Read and parse the file at `path`. Same contract as parser_load_string. */
+bool parser_load_file(const char *path, Scene *scene);
+
+#endif

@@ -1,0 +1,43 @@
+/* Ray-parallelogram intersection, the shape of area lights (step 08).
+ * docs/08-area-lights.md. */
+#include "quad.h"
+
+Quad quad_make(vec3s corner, vec3s edge1, vec3s edge2)
+{
+  vec3s cross = glms_vec3_cross(edge1, edge2);
+  Quad q = {.corner = corner, .edge1 = edge1, .edge2 = edge2};
+  q.area = glms_vec3_norm(cross);
+  q.normal = glms_vec3_scale(cross, 1.0f / q.area);
+  return q;
+}
+
+float quad_hit_t(const Quad *q, Ray r, float tmax)
+{
+  float t = glms_vec3_dot(glms_vec3_sub(q->corner, r.o), q->normal) /
+            glms_vec3_dot(r.d, q->normal);
+  if (!(t > 0.0f && t < tmax))
+    return INFINITY;
+  /* Parameters of the hit: rel = a e1 + b e2, so rel x e2 = a (e1 x e2) and
+   * e1 x rel = b (e1 x e2); project both on the unit normal, divide by area. */
+  vec3s rel = glms_vec3_sub(ray_at(r, t), q->corner);
+  float a = glms_vec3_dot(glms_vec3_cross(rel, q->edge2), q->normal) / q->area;
+  float b = glms_vec3_dot(glms_vec3_cross(q->edge1, rel), q->normal) / q->area;
+  return (a >= 0.0f && a <= 1.0f && b >= 0.0f && b <= 1.0f) ? t : INFINITY;
+}
+
+void quad_hit_fill(const Quad *q, Ray r, float t, Hit *hit)
+{
+  vec3s p = ray_at(r, t);
+  float off = glms_vec3_dot(glms_vec3_sub(p, q->corner), q->normal);
+  hit->t = t;
+  hit->p = glms_vec3_sub(p, glms_vec3_scale(q->normal, off));
+  hit->backface = glms_vec3_dot(r.d, q->normal) > 0.0f;
+  hit->n = hit->backface ? glms_vec3_negate(q->normal) : q->normal;
+  hit->p_err = 0x1p-22f * (vec_max_abs(hit->p) + vec_max_abs(q->corner));
+}
+
+vec3s quad_point(const Quad *q, float a, float b)
+{
+  return glms_vec3_add(q->corner, glms_vec3_add(glms_vec3_scale(q->edge1, a),
+                                                glms_vec3_scale(q->edge2, b)));
+}

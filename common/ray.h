@@ -1,0 +1,47 @@
+/* Ray r(t) = o + t d with unit d (so t is a distance) and the hit record.
+ * Introduced in step 02; docs/02-intersection.md. Spawning secondary rays
+ * without self-intersection is in docs/accuracy.md. */
+#ifndef RT_RAY_H
+#define RT_RAY_H
+
+#include <stdbool.h>
+#include "vec.h"
+
+typedef struct Ray {
+  vec3s o; /* origin, world space */
+  vec3s d; /* unit direction, world space */
+} Ray;
+
+struct Instance;
+
+/* What a closest-hit query returns. The normal always faces against the ray;
+ * `backface` says it was flipped (the ray came from inside or behind). */
+typedef struct Hit {
+  float t;                     /* distance along the ray */
+  vec3s p;                     /* point, refined onto the surface */
+  vec3s n;                     /* unit normal, n . d <= 0 */
+  float p_err;                 /* bound on the error of each coordinate of p */
+  bool backface;               /* the ray hit the surface from behind */
+  const struct Instance *inst; /* what was hit (its material or light) */
+} Hit;
+
+/* The point at distance t along the ray. */
+static inline vec3s ray_at(Ray r, float t)
+{
+  return glms_vec3_add(r.o, glms_vec3_scale(r.d, t));
+}
+
+/* A ray leaving the hit point in unit direction `dir`, its origin pushed off
+ * the surface just past the point's error bound, on the side `dir` goes to.
+ * The push is |n|_1 * p_err (the error box's extent along n), so the origin is
+ * outside the box of possible exact points at any scene scale. */
+static inline Ray ray_spawn(const Hit *hit, vec3s dir)
+{
+  float push = 2.0f * hit->p_err * vec_sum_abs(hit->n);
+  if (glms_vec3_dot(dir, hit->n) < 0.0f)
+    push = -push;
+  Ray r = {.o = glms_vec3_add(hit->p, glms_vec3_scale(hit->n, push)), .d = dir};
+  return r;
+}
+
+#endif

@@ -1,0 +1,47 @@
+/* The render loop: every pixel of the film through a step's pixel function,
+ * in parallel over tiles (OpenMP), deterministic whatever the thread count,
+ * with a progress bar on a terminal. Introduced in step 01; docs/01-film.md. */
+#ifndef RT_RENDER_H
+#define RT_RENDER_H
+
+#include <stdbool.h>
+#include <stdint.h>
+#include "film.h"
+#include "scene.h"
+
+enum { RENDER_MAX_THREADS = 256 };
+
+typedef struct RenderSettings {
+  int threads;        /* 0: as many as OpenMP offers; at most RENDER_MAX_THREADS */
+  uint32_t seed;      /* keys every random number (with pixel and sample) */
+  int samples;        /* camera samples per pixel */
+  int light_samples;  /* samples per area light */
+  int sampler;        /* sampling pattern (step 07's SamplerKind) */
+  float adaptive;     /* adaptive sampling threshold, 0 = off (steps 07, 08) */
+  bool progress;      /* draw a progress bar on stderr */
+} RenderSettings;
+
+/* Per-thread state handed to the pixel function. */
+typedef struct RenderCtx {
+  const RenderSettings *set;
+  uint64_t rays;      /* rays traced by this thread: the step's code counts */
+  uint64_t samples;   /* camera samples taken by this thread */
+  char pad[40];       /* keep threads' counters on separate cache lines */
+} RenderCtx;
+
+/* A step's per-pixel work: the colour of pixel (i, j) (i from the left, j from
+ * the bottom), linear RGB. Must depend only on its arguments. */
+typedef vec3s (*RenderPixelFn)(const Scene *scene, const Film *film, int i,
+                               int j, RenderCtx *ctx);
+
+typedef struct RenderStats {
+  double seconds;     /* wall time of the loop */
+  uint64_t rays, samples;
+  int threads;
+} RenderStats;
+
+/* Fill every pixel of `film` with `pixel`. */
+void render(const Scene *scene, Film *film, RenderPixelFn pixel,
+            const RenderSettings *set, RenderStats *stats);
+
+#endif

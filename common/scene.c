@@ -1,0 +1,211 @@
+/* Scene: instances, lights, materials and the ray queries (step 02 on).
+ * docs/02-intersection.md, docs/05-shadows.md. */
+#include "scene.h"
+
+#include "accel.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+void scene_init(Scene *scene)
+{
+  memset(scene, 0, sizeof *scene);
+  scene->width = 800;
+  scene->height = 600;
+  scene->samples = 1;
+  scene->light_samples = 1;
+  camera_init(&scene->camera, vec_make(0.0f, 0.0f, 0.0f), vec_make(0.0f, 0.0f, -1.0f),
+              vec_make(0.0f, 1.0f, 0.0f), 45.0f, 1.0f, 800.0f / 600.0f);
+}
+
+void scene_free(Scene *scene)
+{
+  free(scene->materials);
+  free(scene->lights);
+  free(scene->instances);
+  accel_free(scene);
+  scene_init(scene);
+}
+
+/* Append one element of `size` bytes to a growing array. */
+static bool push(void **array, int *count, size_t size, const void *elem)
+{
+  int n = *count;
+  if ((n & (n - 1)) == 0) { /* n is 0 or a power of two: grow */
+    void *bigger = realloc(*array, size * (size_t)(n ? 2 * n : 4));
+    if (!bigger) {
+      fprintf(stderr, "scene: out of memory\n");
+      return false;
+    }
+    *array = bigger;
+  }
+  memcpy((char *)*array + size * (size_t)n, elem, size);
+  *count = n + 1;
+  return true;
+}
+
+bool scene_add_material(Scene *scene, const Material *m)
+{
+  return push((void **)&scene->materials, &scene->n_materials, sizeof *m, m);
+}
+
+bool scene_add_light(Scene *scene, const Light *light)
+{
+  return push((void **)&scene->lights, &scene->n_lights, sizeof *light, light);
+}
+
+bool scene_add_instance(Scene *scene, const Instance *inst)
+{
+  if (!push((void **)&scene->instances, &scene->n_instances, sizeof *inst, inst))
+    return false;
+  if (inst->material >= 0)
+    scene->n_shapes = scene->n_instances;
+  return true;
+}
+
+int scene_find_material(const Scene *scene, const char *name)
+{
+  for (int k = 0; k < scene->n_materials; k++)
+    if (strcmp(scene->materials[k].name, name) == 0)
+      return k;
+  return -1;
+}
+
+/* Keep the lights a step renders; note the kinds it drops. */
+static void keep_lights(Scene *scene, unsigned features)
+{
+  int kept = 0;
+  for (int k = 0; k < scene->n_lights; k++) {
+    const Light *light = &scene->lights[k];
+    bool area = light->type == LIGHT_AREA;
+    if (!(features & SCENE_LIGHTS)) {
+      scene->info.ignored |= area ? SCENE_AREA_LIGHTS : SCENE_LIGHTS;
+    } else if (area && !(features & SCENE_AREA_LIGHTS)) {
+      scene->info.ignored |= SCENE_AREA_LIGHTS;
+    } else {
+      scene->lights[kept++] = *light;
+    }
+  }
+  scene->n_lights = kept;
+}
+
+/* Append the shapes the camera sees of the kept lights. */
+static bool add_light_shapes(Scene *scene, unsigned features)
+{
+  for (int k = 0; k < scene->n_lights; k++) {
+    const Light *light = &scene->lights[k];
+    Instance inst = {.material = -1, .light = k};
+    if (light->type == LIGHT_AREA) {
+      inst.shape = SHAPE_QUAD;
+      inst.quad = light->quad;
+    } else if (light->type == LIGHT_POINT && light->radius > 0.0f) {
+      if (!(features & SCENE_LIGHT_SHAPES)) {
+        scene->info.ignored |= SCENE_LIGHT_SHAPES;
+        continue;
+      }
+      inst.shape = SHAPE_SPHERE;
+      inst.sphere = (Sphere){.center = light->position, .radius = light->radius};
+    } else {
+      continue;
+    }
+    if (!push((void **)&scene->instances, &scene->n_instances, sizeof inst, &inst))
+      return false;
+  }
+  return true;
+}
+
+static void analyze(Scene *scene)
+{
+  SceneInfo *info = &scene->info;
+  for (int k = 0; k < scene->n_lights; k++) {
+    info->n_point += scene->lights[k].type == LIGHT_POINT;
+    info->n_directional += scene->lights[k].type == LIGHT_DIRECTIONAL;
+    info->n_area += scene->lights[k].type == LIGHT_AREA;
+  }
+  for (int k = 0; k < scene->n_shapes; k++) {
+    const Instance *inst = &scene->instances[k];
+    const Material *m = &scene->materials[inst->material];
+    info->n_spheres += inst->shape == SHAPE_SPHERE;
+    info->n_planes += inst->shape == SHAPE_PLANE;
+    info->specular |= !vec_is_zero(m->specular);
+    info->ambient |= !vec_is_zero(glms_vec3_mul(m->ambient, scene->ambient));
+  }
+}
+
+bool scene_prepare(Scene *scene, unsigned features)
+{
+  memset(&scene->info, 0, sizeof scene->info);
+  scene->n_instances = scene->n_shapes; /* in case of a second call */
+  if (!(features & SCENE_AMBIENT) && !vec_is_zero(scene->ambient)) {
+    scene->info.ignored |= SCENE_AMBIENT;
+    scene->ambient = glms_vec3_zero();
+  }
+  if (!(features & SCENE_SAMPLES) && scene->samples > 1) {
+    scene->info.ignored |= SCENE_SAMPLES;
+    scene->samples = 1;
+  }
+  keep_lights(scene, features);
+  if (!(features & SCENE_AREA_LIGHTS) && scene->light_samples > 1) {
+    scene->info.ignored |= SCENE_AREA_LIGHTS;
+    scene->light_samples = 1;
+  }
+  if (!add_light_shapes(scene, features))
+    return false;
+  analyze(scene);
+  Camera *cam = &scene->camera;
+  camera_init(cam, cam->eye, cam->center, cam->up, cam->fov_y_deg, cam->focal,
+              (float)scene->width / (float)scene->height);
+  return accel_build(scene);
+}
+
+/* Distance to instance `inst` along the ray, INFINITY when missed. */
+static float instance_hit_t(const Instance *inst, Ray r, float tmax)
+{
+  switch (inst->shape) {
+  case SHAPE_SPHERE: return sphere_hit_t(&inst->sphere, r, tmax);
+  case SHAPE_PLANE: return plane_hit_t(&inst->plane, r, tmax);
+  case SHAPE_QUAD: return quad_hit_t(&inst->quad, r, tmax);
+  }
+  return INFINITY;
+}
+
+static void instance_hit_fill(const Instance *inst, Ray r, float t, Hit *hit)
+{
+  switch (inst->shape) {
+  case SHAPE_SPHERE: sphere_hit_fill(&inst->sphere, r, t, hit); break;
+  case SHAPE_PLANE: plane_hit_fill(&inst->plane, r, t, hit); break;
+  case SHAPE_QUAD: quad_hit_fill(&inst->quad, r, t, hit); break;
+  }
+  hit->inst = inst;
+}
+
+bool scene_intersect(const Scene *scene, Ray r, float tmax, Hit *hit)
+{
+  const Instance *best = NULL;
+  if (scene->accel) {
+    best = accel_closest(scene, r, &tmax);
+  } else {
+    for (int k = 0; k < scene->n_instances; k++) {
+      float t = instance_hit_t(&scene->instances[k], r, tmax);
+      if (t < tmax) {
+        tmax = t;
+        best = &scene->instances[k];
+      }
+    }
+  }
+  if (!best)
+    return false;
+  instance_hit_fill(best, r, tmax, hit);
+  return true;
+}
+
+bool scene_occluded(const Scene *scene, Ray r, float tmax)
+{
+  if (scene->accel)
+    return accel_any(scene, r, tmax);
+  for (int k = 0; k < scene->n_shapes; k++)
+    if (instance_hit_t(&scene->instances[k], r, tmax) < tmax)
+      return true;
+  return false;
+}

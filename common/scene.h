@@ -1,0 +1,100 @@
+/* Scene: camera, film size, materials, lights and the instances that pair a
+ * shape with a material or a light (the lecture's object instances), with the
+ * closest-hit and any-hit queries. Introduced in step 02; docs/02-intersection.md
+ * and docs/05-shadows.md (any-hit). */
+#ifndef RT_SCENE_H
+#define RT_SCENE_H
+
+#include <stdbool.h>
+#include "camera.h"
+#include "light.h"
+#include "material.h"
+#include "plane.h"
+#include "quad.h"
+#include "sphere.h"
+
+typedef enum ShapeType { SHAPE_SPHERE, SHAPE_PLANE, SHAPE_QUAD } ShapeType;
+
+typedef struct Instance {
+  ShapeType shape;
+  union {
+    Sphere sphere;
+    Plane plane;
+    Quad quad;
+  };
+  int material; /* index into Scene.materials, or -1 for a light's shape */
+  int light;    /* index into Scene.lights, or -1 for a lit object */
+} Instance;
+
+/* What a step knows how to render; the rest of a scene is ignored (and said). */
+enum SceneFeature {
+  SCENE_CAMERA = 1u << 0,         /* the lookAt camera (step 03) */
+  SCENE_LIGHTS = 1u << 1,         /* point and directional lights (step 04) */
+  SCENE_AMBIENT = 1u << 2,        /* ambient light (step 06) */
+  SCENE_LIGHT_SHAPES = 1u << 3,   /* lights the camera sees (step 06) */
+  SCENE_SAMPLES = 1u << 4,        /* several samples per pixel (step 07) */
+  SCENE_AREA_LIGHTS = 1u << 5,    /* area lights and light_samples (step 08) */
+};
+
+/* What scene_prepare found the scene needs, so renderers skip the rest. */
+typedef struct SceneInfo {
+  bool specular;       /* some material has a non-zero specular colour */
+  bool ambient;        /* ambient light times some ambient colour is non-zero */
+  int n_point, n_directional, n_area; /* lights kept */
+  int n_spheres, n_planes;            /* lit shapes */
+  unsigned ignored;    /* SceneFeature bits present in the scene but not rendered */
+} SceneInfo;
+
+struct SceneAccel;
+
+typedef struct Scene {
+  int width, height;       /* film size in pixels (default 800 x 600) */
+  Camera camera;           /* default: eye 0 0 0, center 0 0 -1, up 0 1 0, fov 45 */
+  vec3s ambient;           /* ambient light l_amb (default 0) */
+  vec3s background;        /* colour of rays that hit nothing (default 0) */
+  int samples;             /* camera samples per pixel (default 1) */
+  int light_samples;       /* samples per area light (default 1) */
+  Material *materials;
+  int n_materials;
+  Light *lights;
+  int n_lights;
+  Instance *instances;     /* lit shapes first, then the lights' shapes */
+  int n_instances;         /* all instances the camera sees */
+  int n_shapes;            /* instances [0, n_shapes) have a material */
+  SceneInfo info;          /* set by scene_prepare */
+  struct SceneAccel *accel; /* acceleration structure, owned; NULL when none */
+} Scene;
+
+/* Scene limits the parser enforces (no memory blow-up from one line). */
+enum { SCENE_MAX_SAMPLES = 65536 };
+
+/* An empty scene with the defaults above. */
+void scene_init(Scene *scene);
+
+/* Free everything the scene owns; a second call is harmless. */
+void scene_free(Scene *scene);
+
+/* Append a material, light or instance (copied). False when out of memory. */
+bool scene_add_material(Scene *scene, const Material *m);
+bool scene_add_light(Scene *scene, const Light *light);
+bool scene_add_instance(Scene *scene, const Instance *inst);
+
+/* Get the scene ready for a step that handles `features` (SceneFeature bits):
+ * drop what it cannot render (recorded in info.ignored), order the instances,
+ * fill info, derive the camera for the film's aspect and build the
+ * acceleration structure when the scene is large enough to need one.
+ * False when out of memory (the scene is then only fit for scene_free). */
+bool scene_prepare(Scene *scene, unsigned features);
+
+/* Closest hit with t in (0, tmax) among all instances (lit shapes and lights'
+ * shapes). False when the ray hits nothing. */
+bool scene_intersect(const Scene *scene, Ray r, float tmax, Hit *hit);
+
+/* Any-hit query: true when some lit shape (lights' shapes never occlude) lies
+ * on the ray with t in (0, tmax). Stops at the first one found. */
+bool scene_occluded(const Scene *scene, Ray r, float tmax);
+
+/* The index of the material called `name`, or -1. */
+int scene_find_material(const Scene *scene, const char *name);
+
+#endif

@@ -1,0 +1,51 @@
+/* Ray-sphere intersection (step 02) in the numerically stable form of Ray
+ * Tracing Gems, ch. 7. docs/02-intersection.md, docs/accuracy.md. */
+#include "sphere.h"
+
+float sphere_hit_t(const Sphere *s, Ray r, float tmax)
+{
+  /* BEGIN SOLUTION step 02 */
+  /* With d unit the quadratic is t^2 - 2 b t + c = 0, b = -f.d, f = o - c. */
+  vec3s f = glms_vec3_sub(r.o, s->center);
+  float b = -glms_vec3_dot(f, r.d);
+  /* The discriminant as r^2 - (distance from the centre to the line)^2: the
+   * textbook b^2 - c cancels catastrophically for far or small spheres. */
+  vec3s to_line = glms_vec3_add(f, glms_vec3_scale(r.d, b));
+  float disc = s->radius * s->radius - glms_vec3_dot(to_line, to_line);
+  if (!(disc >= 0.0f))
+    return INFINITY;
+  /* The root of larger magnitude without cancellation, the other from the
+   * product of the roots, t0 t1 = c. */
+  float c = glms_vec3_dot(f, f) - s->radius * s->radius;
+  float q = b + copysignf(sqrtf(disc), b);
+  float t0 = c / q, t1 = q;
+  if (t0 > t1) {
+    float tmp = t0;
+    t0 = t1;
+    t1 = tmp;
+  }
+  /* Written so that NaN fails: the nearest root in (0, tmax). */
+  if (t0 > 0.0f && t0 < tmax)
+    return t0;
+  if (t1 > 0.0f && t1 < tmax)
+    return t1;
+  return INFINITY;
+  /* STUB: return INFINITY; */
+  /* END SOLUTION */
+}
+
+void sphere_hit_fill(const Sphere *s, Ray r, float t, Hit *hit)
+{
+  /* BEGIN SOLUTION step 02 */
+  /* Re-project o + t d onto the sphere: the error left is a few ulps of
+   * |c| + r whatever t was (docs/accuracy.md). */
+  vec3s rel = glms_vec3_sub(ray_at(r, t), s->center);
+  rel = glms_vec3_scale(rel, s->radius / glms_vec3_norm(rel));
+  vec3s n_out = glms_vec3_scale(rel, 1.0f / s->radius);
+  hit->t = t;
+  hit->p = glms_vec3_add(s->center, rel);
+  hit->backface = glms_vec3_dot(n_out, r.d) > 0.0f;
+  hit->n = hit->backface ? glms_vec3_negate(n_out) : n_out;
+  hit->p_err = 0x1p-22f * (vec_max_abs(s->center) + s->radius);
+  /* END SOLUTION */
+}

@@ -1,0 +1,47 @@
+/* Small vector helpers on top of cglm's struct API (vec3s by value).
+ * Used from step 01 on; Debian's cglm 0.8.8 lacks a constructor and reflect.
+ * See docs/02-intersection.md for the conventions. */
+#ifndef RT_VEC_H
+#define RT_VEC_H
+
+#include <cglm/struct.h>
+#include <math.h>
+
+/* The vector (x, y, z). */
+static inline vec3s vec_make(float x, float y, float z)
+{
+  vec3s v = {.x = x, .y = y, .z = z};
+  return v;
+}
+
+/* Mirror `in` about the unit normal `n`: in - 2 (in.n) n (GLSL's reflect). */
+static inline vec3s vec_reflect(vec3s in, vec3s n)
+{
+  return glms_vec3_sub(in, glms_vec3_scale(n, 2.0f * glms_vec3_dot(in, n)));
+}
+
+/* Largest absolute component, |v|_inf. */
+static inline float vec_max_abs(vec3s v)
+{
+  return fmaxf(fabsf(v.x), fmaxf(fabsf(v.y), fabsf(v.z)));
+}
+
+/* Sum of absolute components, |v|_1. */
+static inline float vec_sum_abs(vec3s v)
+{
+  return fabsf(v.x) + fabsf(v.y) + fabsf(v.z);
+}
+
+/* True when every component is finite (no NaN, no infinity). */
+static inline int vec_is_finite(vec3s v)
+{
+  return isfinite(v.x) && isfinite(v.y) && isfinite(v.z);
+}
+
+/* True when every component is exactly zero. */
+static inline int vec_is_zero(vec3s v)
+{
+  return v.x == 0.0f && v.y == 0.0f && v.z == 0.0f;
+}
+
+#endif

@@ -1,0 +1,25 @@
+/* Step 03, the pinhole camera: the scene seen through the lookAt camera of
+ * the scene file, each object in its flat diffuse colour. docs/03-camera.md. */
+#include "app.h"
+
+static vec3s pixel(const Scene *scene, const Film *film, int i, int j, RenderCtx *ctx)
+{
+  vec2s s = film_sample(film, i, j);
+  Ray r = camera_ray(&scene->camera, s.x, s.y);
+  Hit hit;
+  ctx->rays++;
+  if (!scene_intersect(scene, r, INFINITY, &hit))
+    return scene->background;
+  return scene->materials[hit.inst->material].diffuse;
+}
+
+int main(int argc, char **argv)
+{
+  const Step step = {
+      .name = "03-camera",
+      .summary = "Step 03: the lookAt pinhole camera; objects in flat colours.",
+      .features = SCENE_CAMERA,
+      .pixel = pixel,
+  };
+  return app_run(argc, argv, &step);
+}

@@ -1,0 +1,21 @@
+/* Step 04, Phong: the scene lit by point and directional lights with the
+ * Phong model, no shadows yet. docs/04-phong.md. */
+#include "app.h"
+#include "shade.h"
+
+static vec3s pixel(const Scene *scene, const Film *film, int i, int j, RenderCtx *ctx)
+{
+  vec2s s = film_sample(film, i, j);
+  return shade_trace(scene, camera_ray(&scene->camera, s.x, s.y), ctx);
+}
+
+int main(int argc, char **argv)
+{
+  const Step step = {
+      .name = "04-phong",
+      .summary = "Step 04: Phong shading with point and directional lights, no shadows.",
+      .features = SCENE_CAMERA | SCENE_LIGHTS,
+      .pixel = pixel,
+  };
+  return app_run(argc, argv, &step);
+}
