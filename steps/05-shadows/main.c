@@ -1,0 +1,21 @@
+/* Step 05, shadows: Phong shading where a light counts only when nothing
+ * lies between the point and the light. docs/05-shadows.md. */
+#include "app.h"
+#include "shade.h"
+
+static vec3s pixel(const Scene *scene, const Film *film, int i, int j, RenderCtx *ctx)
+{
+  vec2s s = film_sample(film, i, j);
+  return shade_trace(scene, camera_ray(&scene->camera, s.x, s.y), ctx);
+}
+
+int main(int argc, char **argv)
+{
+  const Step step = {
+      .name = "05-shadows",
+      .summary = "Step 05: Phong shading with shadows (any-hit shadow rays).",
+      .features = SCENE_CAMERA | SCENE_LIGHTS,
+      .pixel = pixel,
+  };
+  return app_run(argc, argv, &step);
+}
