@@ -26,8 +26,11 @@ static void render_tile(const Scene *scene, Film *film, RenderPixelFn pixel,
   int i1 = i0 + TILE < film->width ? i0 + TILE : film->width;
   int j1 = j0 + TILE < film->height ? j0 + TILE : film->height;
   for (int j = j0; j < j1; j++)
-    for (int i = i0; i < i1; i++)
+    for (int i = i0; i < i1; i++) {
+      ctx->pixel = (uint32_t)j * (uint32_t)film->width + (uint32_t)i;
+      ctx->sample = 0;
       film_set(film, i, j, pixel(scene, film, i, j, ctx));
+    }
 }
 
 void render(const Scene *scene, Film *film, RenderPixelFn pixel,

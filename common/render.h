@@ -26,7 +26,10 @@ typedef struct RenderCtx {
   const RenderSettings *set;
   uint64_t rays;      /* rays traced by this thread: the step's code counts */
   uint64_t samples;   /* camera samples taken by this thread */
-  char pad[40];       /* keep threads' counters on separate cache lines */
+  uint32_t pixel;     /* j * width + i of the pixel being rendered */
+  uint32_t sample;    /* index of the camera sample being traced (steps 07-08
+                       * set it; shading keys its random numbers on both) */
+  char pad[32];       /* keep threads' counters on separate cache lines */
 } RenderCtx;
 
 /* A step's per-pixel work: the colour of pixel (i, j) (i from the left, j from
