@@ -168,7 +168,8 @@ ifeq (test-step,$(firstword $(MAKECMDGOALS)))
   N ?= $(word 2,$(MAKECMDGOALS))
   $(eval $(word 2,$(MAKECMDGOALS)):;@:)
 endif
-N_PAD = $(shell n='$(N)'; [[ "$$n" =~ ^[0-9]+$$ ]] && printf %02d $$((10\#$$n)))
+N_NUM = $(shell expr '$(N)' + 0 2>/dev/null)
+N_PAD = $(if $(N_NUM),$(shell printf %02d '$(N_NUM)' 2>/dev/null))
 STEP_N = $(filter $(N_PAD)-%,$(STEPS))
 test-step:
 	@if [ -z "$(N)" ]; then echo "usage: make test-step N   (N = 1 .. 8)"; exit 2; fi
