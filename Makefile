@@ -212,11 +212,11 @@ help:
 	@echo "make bench        measure speed and error, write docs/benchmarks.md"
 	@echo "make images       regenerate the reference images in images/ (on purpose only)"
 	@echo "make diffs        write docs/diffs/NN-name.diff (each step against the previous)"
-	@echo "make starter      write the student starter tree to $(BUILD)/starter"
+	@echo "make starter      write the student starter tree to $(BUILD)/starter (N=5: steps 1-4 stay solved)"
 	@echo "make clean        remove $(BUILD)/"
 
 starter:
-	@tools/starter.sh $(BUILD)/starter
+	@tools/starter.sh $(BUILD)/starter $(N)
 
 .PHONY: all build deps bench-deps test stress test-step sanitize images diffs \
         check-diffs bench clean help starter

@@ -1,0 +1,112 @@
+#!/usr/bin/env bash
+# Write the student starter tree: the tracked files (git ls-files) copied to
+# DIR, every solution region replaced by a TODO(step NN) line and its stub.
+# Usage: tools/starter.sh DIR [N]   (N: keep the solutions of steps below N)
+# README.md, "For instructors", explains the regions and what a student gets.
+set -euo pipefail
+
+usage() { echo "usage: tools/starter.sh DIR [N]   (N = 1 .. 8: steps below N stay solved)" >&2; exit 2; }
+[ $# -ge 1 ] && [ $# -le 2 ] && [ -n "$1" ] || usage
+dir=$1
+keep_below=${2:-1}
+[[ "$keep_below" =~ ^[0-9]+$ ]] && [ $((10#$keep_below)) -ge 1 ] && [ $((10#$keep_below)) -le 9 ] || usage
+keep_below=$((10#$keep_below))
+
+dir=$(realpath -m -- "$dir")   # relative to where the script was called from
+top=$(git -C "$(dirname "$0")" rev-parse --show-toplevel 2>/dev/null) || {
+  echo "starter: not inside a git checkout (the starter is made from git ls-files)" >&2; exit 1; }
+cd "$top"
+# DIR is removed and rewritten: never the checkout, a parent of it, or a
+# tracked folder; inside the checkout only under build/.
+case "$dir/" in
+  "$top"/build/?*) ;;
+  "$top"/*) echo "starter: refusing to write over '$dir': use a folder under build/ or outside the checkout" >&2; exit 1 ;;
+esac
+case "$top/" in "$dir"/*) echo "starter: refusing to write over '$dir': it contains the checkout" >&2; exit 1 ;; esac
+
+# Step number -> folder name (01 -> 01-film), for the docs page in each TODO.
+declare -A step_name
+for s in steps/[0-9][0-9]-*/; do s=${s%/}; s=${s#steps/}; step_name[${s%%-*}]=$s; done
+names=$(for k in "${!step_name[@]}"; do printf '%s=%s ' "$k" "${step_name[$k]}"; done)
+
+# The awk program: copy the file, replacing each region of a step >= keep by
+#   <indent>/* TODO(step NN): <hint> */
+#   <indent><the STUB line's code, if any>
+# and dropping only the marker lines of regions of steps below keep. The hint
+# is the region's /* HINT: ... */ line when there is one, else "write the
+# body of <enclosing function> (docs/NN-name.md)". Malformed regions fail.
+read -r -d '' prog <<'AWK' || true
+function fail(msg) { printf "starter: %s:%d: %s\n", FILENAME, FNR, msg > "/dev/stderr"; bad = 1; exit 1 }
+BEGIN { n = split(names, pairs, " "); for (k = 1; k <= n; k++) { split(pairs[k], kv, "="); doc[kv[1]] = kv[2] } }
+# Remember the enclosing function: a definition starts at column 0.
+!in_region && /^[A-Za-z_][A-Za-z_0-9 \t*]*[ \t*]\**[A-Za-z_][A-Za-z_0-9]*\(/ && !/;[ \t]*$/ {
+  f = $0; sub(/\(.*/, "", f); sub(/.*[ \t*]/, "", f); func_name = f
+}
+/\/\* BEGIN SOLUTION step [0-9][0-9] \*\// {
+  if (in_region) fail("BEGIN SOLUTION inside another region (line " start ")")
+  in_region = 1; start = FNR; stub = ""; hint = ""
+  step = $0; sub(/.*BEGIN SOLUTION step /, "", step); step = substr(step, 1, 2)
+  indent = $0; sub(/[^ \t].*/, "", indent)
+  keep = (step + 0 < keep_below)
+  next
+}
+/BEGIN SOLUTION/ { fail("expected '/* BEGIN SOLUTION step NN */', found: " $0) }
+in_region && /\/\* END SOLUTION \*\// {
+  in_region = 0
+  if (keep) next
+  if (hint == "") {
+    hint = "complete " (func_name != "" ? func_name : "this function")
+    if (step in doc) hint = hint " (docs/" doc[step] ".md)"
+  }
+  print indent "/* TODO(step " step "): " hint " */"
+  if (stub != "") print indent stub
+  next
+}
+/END SOLUTION/ { fail("END SOLUTION without a BEGIN") }
+in_region && /^[ \t]*\/\* STUB: .*\*\/[ \t]*$/ {
+  stub = $0; sub(/^[ \t]*\/\* STUB: /, "", stub); sub(/[ \t]*\*\/[ \t]*$/, "", stub)
+  next
+}
+in_region && /^[ \t]*\/\* HINT: .*\*\/[ \t]*$/ {
+  hint = $0; sub(/^[ \t]*\/\* HINT: /, "", hint); sub(/[ \t]*\*\/[ \t]*$/, "", hint)
+  next
+}
+in_region { if (keep) print; next }
+{ print }
+END { if (!bad && in_region) { FNR = start; fail("region never ends (no END SOLUTION)") } }
+AWK
+
+tmp=$(mktemp -d "${TMPDIR:-/tmp}/starter.XXXXXX")
+trap 'rm -rf "$tmp"' EXIT
+regions=0; files=0
+while IFS= read -r -d '' f; do
+  [ -e "$f" ] || continue                     # deleted in the working tree
+  mkdir -p "$tmp/tree/$(dirname "$f")"
+  if [ "$f" != tools/starter.sh ] && grep -q 'BEGIN SOLUTION' "$f" 2>/dev/null; then
+    awk -v keep_below="$keep_below" -v names="$names" "$prog" "$f" > "$tmp/tree/$f"
+    chmod --reference="$f" "$tmp/tree/$f"
+    regions=$((regions + $(grep -c 'BEGIN SOLUTION' "$f"))); files=$((files + 1))
+  else
+    cp -p "$f" "$tmp/tree/$f"
+  fi
+done < <(git ls-files -z)
+
+# The starter keeps -Werror, except for what a stub leaves unused (parameters,
+# variables, static helpers the solution called): still shown as warnings, they
+# point at what the student has to use.
+sed -i 's/-Werror /-Werror -Wno-error=unused-parameter -Wno-error=unused-variable -Wno-error=unused-function -Wno-error=unused-but-set-variable /' \
+  "$tmp/tree/Makefile"
+grep -q -- '-Wno-error=unused-parameter' "$tmp/tree/Makefile" || {
+  echo "starter: could not relax -Werror in the starter's Makefile" >&2; exit 1; }
+# Its consecutive-step diffs show the stubs, not the solutions.
+if [ -x "$tmp/tree/tools/diffs.sh" ]; then
+  (cd "$tmp/tree" && tools/diffs.sh write $(ls -d steps/[0-9][0-9]-* | sed 's|steps/||') >/dev/null)
+fi
+
+rm -rf "$dir"
+mkdir -p "$(dirname "$dir")"
+mv "$tmp/tree" "$dir"
+left=$(grep -rl 'BEGIN SOLUTION' "$dir" --exclude=starter.sh --exclude='*.md' --exclude='*.diff' || true)
+[ -z "$left" ] || { echo "starter: solution markers left in: $left" >&2; exit 1; }
+echo "starter: wrote $dir ($regions solution regions in $files files;" \
+     "$( [ "$keep_below" -gt 1 ] && echo "steps below $keep_below kept solved" || echo "all stubbed" )). Build it: cd $dir && make"
