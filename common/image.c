@@ -131,8 +131,11 @@ static bool encode(Out *out, const char *ext, int w, int h, const float *rgb,
 bool image_save(const char *path, int w, int h, const float *rgb, Tonemap tm)
 {
   const char *ext = extension(path);
-  if (strcmp(ext, "png") && strcmp(ext, "jpg") && strcmp(ext, "jpeg") &&
-      strcmp(ext, "hdr") && strcmp(ext, "pfm")) {
+  static const char *const known[] = {"png", "jpg", "jpeg", "hdr", "pfm"};
+  bool ok_ext = false;
+  for (int k = 0; k < 5; k++)
+    ok_ext |= strcmp(ext, known[k]) == 0;
+  if (!ok_ext) {
     fprintf(stderr, "image: cannot write '%s': unknown extension '.%s' "
                     "(expected .png, .jpg, .hdr or .pfm)\n", path, ext);
     return false;
@@ -178,7 +181,7 @@ static bool load_pfm(FILE *f, const char *path, int *w, int *h, float **rgb)
   char kind[3] = {0};
   float scale;
   if (fscanf(f, "%2s %d %d %f", kind, w, h, &scale) != 4 || fgetc(f) == EOF ||
-      (strcmp(kind, "PF") && strcmp(kind, "Pf")) || *w <= 0 || *h <= 0 ||
+      (strcmp(kind, "PF") != 0 && strcmp(kind, "Pf") != 0) || *w <= 0 || *h <= 0 ||
       (long long)*w * *h > (1ll << 28) || scale == 0.0f) {
     fprintf(stderr, "image: '%s' is not a PFM file\n", path);
     return false;
