@@ -8,7 +8,8 @@ prev=""; stale=0
 for s in "$@"; do
   if [ -n "$prev" ]; then
     out=docs/diffs/$s.diff
-    new=$(diff -ruN "steps/$prev" "steps/$s")
+    # File times are dropped from the headers: a fresh clone must match.
+    new=$(diff -ruN "steps/$prev" "steps/$s" | sed -E 's/^((---|[+][+][+]) [^[:space:]]+)[[:space:]].*/\1/')
     if [ "$mode" = write ]; then
       printf '%s\n' "$new" > "$out"
     elif [ "$(printf '%s\n' "$new")" != "$(cat "$out" 2>/dev/null)" ]; then
