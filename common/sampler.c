@@ -1,11 +1,16 @@
-/* Sampling patterns of step 07: names here, the patterns below.
- * docs/07-antialiasing.md. */
+/* Sampling patterns of step 07: where sample k of a pixel lies, as a function
+ * of (seed, pixel, k) alone. docs/07-antialiasing.md explains each pattern. */
 #include "sampler.h"
 
 #include <string.h>
 
+#include "rng.h"
+
 static const char *const NAMES[SAMPLER_COUNT] = {"center", "grid", "random",
                                                  "jitter", "sobol"};
+
+/* The largest float below 1: a coordinate that rounds up to 1 is put here. */
+static const float BELOW_ONE = 0x1.fffffep-1f;
 
 bool sampler_parse(const char *name, SamplerKind *out)
 {
@@ -21,4 +26,109 @@ bool sampler_parse(const char *name, SamplerKind *out)
 const char *sampler_name(SamplerKind kind)
 {
   return kind < SAMPLER_COUNT ? NAMES[kind] : "?";
+}
+
+/* The camera sample's random numbers: the stream of (seed, pixel, index)
+ * jumped 2^32 draws ahead, so shading may draw from the start of the same
+ * stream (step 08's light samples) without repeating these numbers. */
+static Rng sample_rng(uint32_t seed, uint32_t pixel, uint32_t index)
+{
+  Rng r = rng_make(seed, pixel, index);
+  r.state += 0x9e3779b97f4a7c15ull << 32;
+  return r;
+}
+
+/* Point (u, v) of [0,1)^2 placed in cell `cell` of `count` equal-area cells:
+ * rows = floor(sqrt(count)); row q holds cells [start(q), start(q+1)) with
+ * start(q) = floor(q count / rows), and is (start(q+1) - start(q)) / count tall,
+ * so every cell has area 1/count and count = k^2 gives the k x k grid. */
+static vec2s cell_point(uint32_t cell, uint32_t count, float u, float v)
+{
+  uint64_t rows = 1;
+  while ((rows + 1) * (rows + 1) <= count)
+    rows++;
+  /* The largest q with start(q) <= cell: q count < (cell + 1) rows. */
+  uint64_t q = ((cell + 1) * rows - 1) / count;
+  uint64_t start = q * count / rows, next = (q + 1) * count / rows;
+  uint64_t cols = next - start;
+  float x = ((float)(cell - start) + u) / (float)cols;
+  float y = ((float)start + v * (float)cols) / (float)count;
+  vec2s s = {.x = fminf(x, BELOW_ONE), .y = fminf(y, BELOW_ONE)};
+  return s;
+}
+
+static uint32_t reverse_bits(uint32_t x)
+{
+  x = (x << 16) | (x >> 16);
+  x = ((x & 0x00ff00ffu) << 8) | ((x & 0xff00ff00u) >> 8);
+  x = ((x & 0x0f0f0f0fu) << 4) | ((x & 0xf0f0f0f0u) >> 4);
+  x = ((x & 0x33333333u) << 2) | ((x & 0xccccccccu) >> 2);
+  x = ((x & 0x55555555u) << 1) | ((x & 0xaaaaaaaau) >> 1);
+  return x;
+}
+
+/* Second Sobol dimension as 32 fixed-point bits: the generator matrix has
+ * columns v_k = v_{k-1} ^ (v_{k-1} >> 1), v_0 = 2^31 (Pascal's triangle mod 2).
+ * The first dimension is the van der Corput sequence, reverse_bits(i). */
+static uint32_t sobol_dim2(uint32_t i)
+{
+  uint32_t r = 0;
+  for (uint32_t v = 1u << 31; i; i >>= 1, v ^= v >> 1)
+    if (i & 1)
+      r ^= v;
+  return r;
+}
+
+/* Nested uniform (Owen) scramble of a 32-bit fraction, hash-based (Burley
+ * 2020, "Practical Hash-based Owen Scrambling", with Vegdahl's constants).
+ * On the reversed bits, the hash changes each bit only as a function of the
+ * bits below it: so each digit of x is flipped as a random function of the
+ * digits above it, which is Owen's scramble, and boxes of the net map to boxes. */
+static uint32_t owen_scramble(uint32_t x, uint32_t seed)
+{
+  x = reverse_bits(x);
+  x += seed;
+  x ^= x * 0x6c50b47cu;
+  x ^= x * 0xb82f1e52u;
+  x ^= x * 0xc7afe638u;
+  x ^= x * 0x8d22f6e6u;
+  return reverse_bits(x);
+}
+
+/* 32 fixed-point bits to a float in [0,1): the top 24 bits times 2^-24. */
+static float fraction(uint32_t x)
+{
+  return (float)(x >> 8) * 0x1p-24f;
+}
+
+vec2s sampler_get(SamplerKind kind, uint32_t seed, uint32_t pixel, uint32_t index,
+                  uint32_t first, uint32_t count)
+{
+  vec2s s = {.x = 0.5f, .y = 0.5f};
+  Rng r = sample_rng(seed, pixel, index);
+  switch (kind) {
+  case SAMPLER_GRID:
+    return cell_point(index - first, count, 0.5f, 0.5f);
+  case SAMPLER_RANDOM:
+    s.x = rng_float(&r);
+    s.y = rng_float(&r);
+    return s;
+  case SAMPLER_JITTER: {
+    float u = rng_float(&r);
+    return cell_point(index - first, count, u, rng_float(&r));
+  }
+  case SAMPLER_SOBOL: {
+    /* One pair of scramble seeds per pixel: the stream of sample 2^32 - 1,
+     * an index no pixel reaches (at most SCENE_MAX_SAMPLES samples). */
+    Rng px = sample_rng(seed, pixel, UINT32_MAX);
+    uint32_t sx = rng_next(&px), sy = rng_next(&px);
+    s.x = fraction(owen_scramble(reverse_bits(index), sx));
+    s.y = fraction(owen_scramble(sobol_dim2(index), sy));
+    return s;
+  }
+  case SAMPLER_CENTER:
+  case SAMPLER_COUNT:
+    break;
+  }
+  return s;
 }

@@ -1,0 +1,72 @@
+/* Step 06: ambient light (a constant stand-in for indirect light) and lights
+ * the camera can see. docs/06-ambient.md. */
+#include "shade.h"
+
+vec3s shade_incident(const Scene *scene, const Light *light, const Hit *hit,
+                     vec3s *l, RenderCtx *ctx)
+{
+  float dist;
+  vec3s li = light_incident(light, hit->p, hit->p_err, l, &dist);
+  /* BEGIN SOLUTION step 05 */
+  /* A light behind the surface adds nothing (shade_phong skips it): no
+   * shadow ray for it. */
+  if (!(glms_vec3_dot(hit->n, *l) > 0.0f))
+    return li;
+  /* The lecture traces a closest-hit ray and checks that it reaches the light.
+   * Any occluder closer than the light will do, so ask the cheaper any-hit
+   * query, stopping just short of the light (docs/05-shadows.md). The origin
+   * is pushed off the surface by its error bound, not by a fixed epsilon. */
+  Ray shadow = ray_spawn(hit, *l);
+  ctx->rays++;
+  if (scene_occluded(scene, shadow, dist * (1.0f - 0x1p-20f)))
+    return glms_vec3_zero();
+  /* END SOLUTION */
+  return li;
+}
+
+vec3s shade_phong(const Scene *scene, const Hit *hit, vec3s eye, RenderCtx *ctx)
+{
+  const Material *m = &scene->materials[hit->inst->material];
+  vec3s c = glms_vec3_zero();
+  /* BEGIN SOLUTION step 06 */
+  /* m_amb * l_amb: skipped when the scene has no ambient light at all. */
+  if (scene->info.ambient)
+    c = glms_vec3_mul(m->ambient, scene->ambient);
+  /* END SOLUTION */
+  /* BEGIN SOLUTION step 04 */
+  vec3s v = glms_vec3_normalize(glms_vec3_sub(eye, hit->p));
+  bool specular = !vec_is_zero(m->specular);
+  for (int k = 0; k < scene->n_lights; k++) {
+    vec3s l;
+    vec3s li = shade_incident(scene, &scene->lights[k], hit, &l, ctx);
+    float n_dot_l = glms_vec3_dot(hit->n, l);
+    if (!(n_dot_l > 0.0f)) /* light behind the surface: no diffuse, no specular */
+      continue;
+    c = glms_vec3_add(c, glms_vec3_scale(glms_vec3_mul(m->diffuse, li), n_dot_l));
+    if (specular) {
+      /* The lecture's slide omits L_i here; without it the highlight would not
+       * dim with distance or light power (docs/04-phong.md). */
+      vec3s r = vec_reflect(glms_vec3_negate(l), hit->n);
+      float lobe = powf(fmaxf(0.0f, glms_vec3_dot(r, v)), m->shininess);
+      c = glms_vec3_add(c, glms_vec3_scale(glms_vec3_mul(m->specular, li), lobe));
+    }
+  }
+  /* END SOLUTION */
+  return c;
+}
+
+vec3s shade_trace(const Scene *scene, Ray ray, RenderCtx *ctx)
+{
+  Hit hit;
+  ctx->rays++;
+  if (!scene_intersect(scene, ray, INFINITY, &hit))
+    return scene->background;
+  /* BEGIN SOLUTION step 06 */
+  if (hit.inst->light >= 0) {
+    /* A point light's sphere shows the radiance P / t^2 it sends this far. */
+    const Light *light = &scene->lights[hit.inst->light];
+    return glms_vec3_divs(light->power, hit.t * hit.t);
+  }
+  /* END SOLUTION */
+  return shade_phong(scene, &hit, ray.o, ctx);
+}
