@@ -1,0 +1,250 @@
+/* Step 08: area lights. A parallelogram light is sampled as N small point
+ * lights spread over it in strata, and shadow rays are saved where the first
+ * samples agree the light is all visible or all hidden. docs/08-area-lights.md. */
+#include "shade.h"
+
+#include "rng.h"
+#include "sampler.h"
+
+vec3s shade_incident(const Scene *scene, const Light *light, const Hit *hit,
+                     vec3s *l, RenderCtx *ctx)
+{
+  float dist;
+  vec3s li = light_incident(light, hit->p, hit->p_err, l, &dist);
+  /* BEGIN SOLUTION step 05 */
+  /* A light behind the surface adds nothing (shade_phong skips it): no
+   * shadow ray for it. */
+  if (!(glms_vec3_dot(hit->n, *l) > 0.0f))
+    return li;
+  /* The lecture traces a closest-hit ray and checks that it reaches the light.
+   * Any occluder closer than the light will do, so ask the cheaper any-hit
+   * query, stopping just short of the light (docs/05-shadows.md). The origin
+   * is pushed off the surface by its error bound, not by a fixed epsilon. */
+  Ray shadow = ray_spawn(hit, *l);
+  ctx->rays++;
+  if (scene_occluded(scene, shadow, dist * (1.0f - 0x1p-20f)))
+    return glms_vec3_zero();
+  /* END SOLUTION */
+  return li;
+}
+
+/* Phong's term for one light: radiance li arriving from unit direction l. */
+static vec3s phong_light(const Material *m, const Hit *hit, vec3s v, vec3s li, vec3s l)
+{
+  vec3s c = glms_vec3_zero();
+  /* BEGIN SOLUTION step 04 */
+  float n_dot_l = glms_vec3_dot(hit->n, l);
+  if (!(n_dot_l > 0.0f)) /* light behind the surface: no diffuse, no specular */
+    return c;
+  c = glms_vec3_scale(glms_vec3_mul(m->diffuse, li), n_dot_l);
+  if (!vec_is_zero(m->specular)) {
+    /* The lecture's slide omits L_i here; without it the highlight would not
+     * dim with distance or light power (docs/04-phong.md). */
+    vec3s r = vec_reflect(glms_vec3_negate(l), hit->n);
+    float lobe = powf(fmaxf(0.0f, glms_vec3_dot(r, v)), m->shininess);
+    c = glms_vec3_add(c, glms_vec3_scale(glms_vec3_mul(m->specular, li), lobe));
+  }
+  /* END SOLUTION */
+  return c;
+}
+
+/* How one shading point spreads its N samples over the light. */
+typedef struct LightPattern {
+  int kind;        /* SamplerKind: the same patterns as the pixel's samples */
+  int n, nx, ny;   /* N samples; jitter and grid use nx x ny strata */
+  Rng rng;         /* stream of this pixel, camera sample and light */
+  uint32_t shift[2]; /* sobol: random digital shift (XOR) of each axis */
+} LightPattern;
+
+/* BEGIN SOLUTION step 08 */
+static LightPattern pattern_make(const RenderCtx *ctx, int light, int n)
+{
+  LightPattern pat = {.kind = ctx->set->sampler, .n = n};
+  /* nx x ny strata, nx the largest divisor of n up to sqrt(n): 16 -> 4 x 4,
+   * 8 -> 2 x 4, a prime -> 1 x n strips. */
+  pat.nx = (int)sqrtf((float)n);
+  while (n % pat.nx)
+    pat.nx--;
+  pat.ny = n / pat.nx;
+  /* A stream apart from the camera sampler's: the seed is mixed with the
+   * light's index, the stream keyed by pixel and camera sample. */
+  pat.rng = rng_make(ctx->set->seed ^ (0x9e3779b9u * (uint32_t)(light + 1)),
+                     ctx->pixel, ctx->sample);
+  pat.shift[0] = rng_next(&pat.rng);
+  pat.shift[1] = rng_next(&pat.rng);
+  return pat;
+}
+
+/* Parameters (a, b) in [0, 1)^2 of sample k on the light. */
+static vec2s pattern_uv(const LightPattern *pat, int k)
+{
+  /* Sample k's own two draws: splitmix's state only grows by a constant, so
+   * this is draws 2k, 2k+1 of the stream, in any order of k. */
+  Rng r = {pat->rng.state + 2u * (uint64_t)k * 0x9e3779b97f4a7c15ull};
+  float ja = 0.5f, jb = 0.5f; /* where in its stratum: centre for grid */
+  switch (pat->kind) {
+  case SAMPLER_CENTER: return (vec2s){{0.5f, 0.5f}};
+  case SAMPLER_RANDOM: ja = rng_float(&r); return (vec2s){{ja, rng_float(&r)}};
+  case SAMPLER_SOBOL: {
+    /* Sobol's first two dimensions, a (0,2) sequence: every 2^m prefix puts
+     * one point in each of 2^m equal boxes of every shape; XOR keeps that. */
+    uint32_t a = 0, b = 0, va = 1u << 31, vb = 1u << 31;
+    for (uint32_t i = (uint32_t)k; i; i >>= 1, va >>= 1, vb ^= vb >> 1)
+      if (i & 1u) {
+        a ^= va;
+        b ^= vb;
+      }
+    a ^= pat->shift[0];
+    b ^= pat->shift[1];
+    return (vec2s){{(float)(a >> 8) * 0x1p-24f, (float)(b >> 8) * 0x1p-24f}};
+  }
+  case SAMPLER_JITTER: ja = rng_float(&r); jb = rng_float(&r); break;
+  default: break;
+  }
+  /* One sample in each of the nx x ny cells, k in raster order. */
+  return (vec2s){{((float)(k % pat->nx) + ja) / (float)pat->nx,
+                  ((float)(k / pat->nx) + jb) / (float)pat->ny}};
+}
+
+/* One of N samples as a point light of power (P/N) cos(theta_light): its
+ * radiance at the hit point, *l toward it and *dist to it. Zero when the point
+ * is behind the light (one-sided) or on it. */
+static vec3s area_incident(const Light *light, const LightPattern *pat, int k,
+                           const Hit *hit, vec3s *l, float *dist)
+{
+  vec2s ab = pattern_uv(pat, k);
+  vec3s to_x = glms_vec3_sub(quad_point(&light->quad, ab.x, ab.y), hit->p);
+  float r2 = glms_vec3_dot(to_x, to_x);
+  *dist = sqrtf(r2);
+  if (!(*dist > hit->p_err))
+    return glms_vec3_zero();
+  *l = glms_vec3_scale(to_x, 1.0f / *dist);
+  float cos_light = -glms_vec3_dot(*l, light->quad.normal);
+  if (!(cos_light > 0.0f))
+    return glms_vec3_zero();
+  return glms_vec3_scale(light->power, cos_light / ((float)pat->n * r2));
+}
+
+/* The shadow test of a sample at distance dist in unit direction l (any-hit
+ * query stopping just short of the light, as in step 05). */
+static bool sample_lit(const Scene *scene, const Hit *hit, vec3s l, float dist,
+                       RenderCtx *ctx)
+{
+  ctx->rays++;
+  return !scene_occluded(scene, ray_spawn(hit, l), dist * (1.0f - 0x1p-20f));
+}
+
+/* 1 when sample k lights the point, 0 when shadowed or facing away. */
+static int sample_visible(const Scene *scene, const Light *light,
+                          const LightPattern *pat, int k, const Hit *hit, RenderCtx *ctx)
+{
+  vec3s l;
+  float dist;
+  vec3s li = area_incident(light, pat, k, hit, &l, &dist);
+  if (vec_is_zero(li) || !(glms_vec3_dot(hit->n, l) > 0.0f))
+    return 0;
+  return sample_lit(scene, hit, l, dist, ctx);
+}
+
+/* Adaptive sampling: the samples of the four corner cells (the first four
+ * of the sequence for the other patterns) are traced first. All lit: the other
+ * samples are taken as lit, with no shadow ray; all dark: the light adds
+ * nothing. *probe gets the four indices, the result is 1 (all lit), 0 (all
+ * dark) or -1 (mixed: every sample needs its shadow ray). */
+static int probe_light(const Scene *scene, const Light *light, const LightPattern *pat,
+                       const Hit *hit, int vis[4], int probe[4], RenderCtx *ctx)
+{
+  bool cells = pat->kind == SAMPLER_GRID || pat->kind == SAMPLER_JITTER;
+  int corner[4] = {0, pat->nx - 1, pat->n - pat->nx, pat->n - 1};
+  int lit = 0;
+  for (int j = 0; j < 4; j++) {
+    probe[j] = cells ? corner[j] : j;
+    vis[j] = sample_visible(scene, light, pat, probe[j], hit, ctx);
+    lit += vis[j];
+  }
+  return lit == 4 ? 1 : lit == 0 ? 0 : -1;
+}
+/* END SOLUTION */
+
+vec3s shade_area(const Scene *scene, int light_index, const Hit *hit, vec3s eye,
+                 RenderCtx *ctx)
+{
+  vec3s c = glms_vec3_zero();
+  /* BEGIN SOLUTION step 08 */
+  const Light *light = &scene->lights[light_index];
+  const Material *m = &scene->materials[hit->inst->material];
+  vec3s v = glms_vec3_normalize(glms_vec3_sub(eye, hit->p));
+  int n = ctx->set->light_samples > 0 ? ctx->set->light_samples : 1;
+  LightPattern pat = pattern_make(ctx, light_index, n);
+  /* Adaptive only pays with more samples than the four probes. */
+  int vis[4] = {0}, probe[4] = {-1, -1, -1, -1}, agreed = -1;
+  if (ctx->set->adaptive > 0.0f && n > 4)
+    agreed = probe_light(scene, light, &pat, hit, vis, probe, ctx);
+  if (agreed == 0)
+    return c;
+  for (int k = 0; k < n; k++) {
+    vec3s l;
+    float dist;
+    vec3s li = area_incident(light, &pat, k, hit, &l, &dist);
+    if (vec_is_zero(li) || !(glms_vec3_dot(hit->n, l) > 0.0f))
+      continue;
+    if (agreed < 0) { /* every sample's own shadow test; probes already know */
+      int j = 0;
+      while (j < 4 && probe[j] != k)
+        j++;
+      if (!(j < 4 ? vis[j] : sample_lit(scene, hit, l, dist, ctx)))
+        continue;
+    }
+    c = glms_vec3_add(c, phong_light(m, hit, v, li, l));
+  }
+  /* END SOLUTION */
+  return c;
+}
+
+vec3s shade_phong(const Scene *scene, const Hit *hit, vec3s eye, RenderCtx *ctx)
+{
+  const Material *m = &scene->materials[hit->inst->material];
+  vec3s c = glms_vec3_zero();
+  /* BEGIN SOLUTION step 06 */
+  /* m_amb * l_amb: skipped when the scene has no ambient light at all. */
+  if (scene->info.ambient)
+    c = glms_vec3_mul(m->ambient, scene->ambient);
+  /* END SOLUTION */
+  /* BEGIN SOLUTION step 04 */
+  vec3s v = glms_vec3_normalize(glms_vec3_sub(eye, hit->p));
+  for (int k = 0; k < scene->n_lights; k++) {
+    if (scene->lights[k].type == LIGHT_AREA) { /* N point lights (step 08) */
+      c = glms_vec3_add(c, shade_area(scene, k, hit, eye, ctx));
+      continue;
+    }
+    vec3s l;
+    vec3s li = shade_incident(scene, &scene->lights[k], hit, &l, ctx);
+    c = glms_vec3_add(c, phong_light(m, hit, v, li, l));
+  }
+  /* END SOLUTION */
+  return c;
+}
+
+vec3s shade_trace(const Scene *scene, Ray ray, RenderCtx *ctx)
+{
+  Hit hit;
+  ctx->rays++;
+  if (!scene_intersect(scene, ray, INFINITY, &hit))
+    return scene->background;
+  /* BEGIN SOLUTION step 08 */
+  if (hit.inst->light >= 0 && scene->lights[hit.inst->light].type == LIGHT_AREA) {
+    /* The front face shows the radiance L = P / A; the light is one-sided and
+     * its back emits nothing: black (docs/08-area-lights.md). */
+    const Light *area = &scene->lights[hit.inst->light];
+    return hit.backface ? glms_vec3_zero() : glms_vec3_divs(area->power, area->quad.area);
+  }
+  /* END SOLUTION */
+  /* BEGIN SOLUTION step 06 */
+  if (hit.inst->light >= 0) {
+    /* A point light's sphere shows the radiance P / t^2 it sends this far. */
+    const Light *light = &scene->lights[hit.inst->light];
+    return glms_vec3_divs(light->power, hit.t * hit.t);
+  }
+  /* END SOLUTION */
+  return shade_phong(scene, &hit, ray.o, ctx);
+}
