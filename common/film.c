@@ -54,15 +54,19 @@ bool film_save(const Film *film, const char *path, Tonemap tm)
   return image_save(path, film->width, film->height, film->rgb, tm);
 }
 
-/* Neumaier's variant of Kahan summation, per channel: the rounding error of
- * every addition is kept in `comp` and added back at the end. */
+/* A float-float sum per channel: TwoSum (Knuth) gives the exact rounding
+ * error of each addition, it is added to `comp`, and (sum, comp) is then
+ * renormalized so that comp stays under half an ulp of sum. Plain Neumaier
+ * (comp summed naively) loses float precision after ~10^4 samples, since
+ * comp's own rounding then grows with n^2 eps^2. */
 static void accum1(float *sum, float *comp, float x)
 {
-  float t = *sum + x;
-  if (fabsf(*sum) >= fabsf(x))
-    *comp += (*sum - t) + x;
-  else
-    *comp += (x - t) + *sum;
+  float s = *sum + x;
+  float bp = s - *sum;
+  float e = (*sum - (s - bp)) + (x - bp); /* s + e == sum + x exactly */
+  float c = *comp + e;
+  float t = s + c; /* FastTwoSum: |s| >= |c| */
+  *comp = c - (t - s);
   *sum = t;
 }
 

@@ -32,7 +32,7 @@ vec3s film_get(const Film *film, int i, int j);
 /* Save through image_save (format from the extension, atomic). */
 bool film_save(const Film *film, const char *path, Tonemap tm);
 
-/* Compensated (Kahan-Babuska-Neumaier) sum of colour samples: the mean of
+/* Compensated (float-float, TwoSum) sum of colour samples: the mean of
  * millions of samples keeps float precision (docs/accuracy.md). */
 typedef struct FilmAccum {
   vec3s sum, comp;

@@ -37,8 +37,8 @@ unsigned char image_to_byte(float c, Tonemap tm)
   /* BEGIN SOLUTION step 01 */
   if (!(c > 0.0f)) /* also maps NaN to 0 */
     return 0;
-  if (tm == TONEMAP_REINHARD)
-    c = c / (1.0f + c);
+  if (tm == TONEMAP_REINHARD) /* infinity would give inf/inf = NaN: its limit is 1 */
+    c = isinf(c) ? 1.0f : c / (1.0f + c);
   if (c > 1.0f)
     c = 1.0f;
   if (tm != TONEMAP_CLAMP)
