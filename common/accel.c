@@ -1,30 +1,374 @@
-/* Acceleration structure (docs/performance.md). Until a scene is large enough
- * to need one, the scene queries loop over the instances. */
+/* Acceleration structure (docs/performance.md): lit spheres in blocks of
+ * LANES, tested by one branch-free loop the compiler vectorizes (it computes
+ * exactly common/sphere.c's formula, operation for operation, so the answers
+ * are bit-identical), found through a BVH (common/bvh.c) when there are many.
+ * Everything else (planes, lights' shapes) is tested one by one. */
 #include "accel.h"
 
-bool accel_build(Scene *scene)
+#include <limits.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "bvh.h"
+
+enum { LANES = 8, STACK = 64 };
+
+/* Up to LANES spheres; an unused lane has a NaN centre, which every
+ * comparison of the kernel rejects, and instance index INT_MAX. */
+typedef struct SphereBlock {
+  _Alignas(32) float cx[LANES];
+  _Alignas(32) float cy[LANES];
+  _Alignas(32) float cz[LANES];
+  _Alignas(32) float rad[LANES];
+  int inst[LANES];
+} SphereBlock;
+
+struct SceneAccel {
+  SphereBlock *blocks; /* leaf order of the hierarchy, or instance order */
+  int n_blocks;
+  BvhNode *nodes;      /* NULL: test every block; else leaf index = block */
+  int *others;         /* instances not in blocks, lit ones first */
+  int n_others, n_others_lit;
+};
+
+float accel_instance_hit_t(const Instance *inst, Ray r, float tmax)
 {
-  scene->accel = NULL;
+  switch (inst->shape) {
+  case SHAPE_SPHERE: return sphere_hit_t(&inst->sphere, r, tmax);
+  case SHAPE_PLANE: return plane_hit_t(&inst->plane, r, tmax);
+  case SHAPE_QUAD: return quad_hit_t(&inst->quad, r, tmax);
+  }
+  return INFINITY;
+}
+
+/* sphere_hit_t for the LANES spheres of a block (common/sphere.c explains the
+ * stable form). Same operations in the same order, no contraction: each lane
+ * rounds exactly as the scalar function does. Selects instead of branches,
+ * except one: when the ray's line misses every sphere of the block (most rays,
+ * most blocks) the square roots and divisions are skipped. False then. */
+static bool block_hit_t(const SphereBlock *restrict blk, Ray r, float tmax,
+                        float *restrict t)
+{
+  float ox = r.o.x, oy = r.o.y, oz = r.o.z, dx = r.d.x, dy = r.d.y, dz = r.d.z;
+  float b[LANES], disc[LANES];
+  int any = 0;
+  for (int k = 0; k < LANES; k++) {
+    float fx = ox - blk->cx[k], fy = oy - blk->cy[k], fz = oz - blk->cz[k];
+    b[k] = -(fx * dx + fy * dy + fz * dz);
+    float lx = fx + dx * b[k], ly = fy + dy * b[k], lz = fz + dz * b[k];
+    float rr = blk->rad[k] * blk->rad[k];
+    disc[k] = rr - (lx * lx + ly * ly + lz * lz);
+    any |= disc[k] >= 0.0f;
+  }
+  if (!any)
+    return false;
+  for (int k = 0; k < LANES; k++) {
+    /* c = |f|^2 - r^2 in double (products of floats are exact there), rounded
+     * once, as sphere.c does. */
+    double fx = (double)(ox - blk->cx[k]), fy = (double)(oy - blk->cy[k]),
+           fz = (double)(oz - blk->cz[k]), rad = (double)blk->rad[k];
+    float c = (float)((fx * fx + fy * fy + fz * fz) - rad * rad);
+    float q = b[k] + copysignf(sqrtf(disc[k] >= 0.0f ? disc[k] : 0.0f), b[k]);
+    float t0 = c / q, t1 = q;
+    float lo = t0 > t1 ? t1 : t0, hi = t0 > t1 ? t0 : t1;
+    float hit = (hi > 0.0f && hi < tmax) ? hi : INFINITY;
+    hit = (lo > 0.0f && lo < tmax) ? lo : hit;
+    t[k] = disc[k] >= 0.0f ? hit : INFINITY;
+  }
   return true;
 }
 
-void accel_free(Scene *scene)
+/* The closest hit so far: distance, instance index (INT_MAX: none). */
+typedef struct Best {
+  float t;
+  int inst;
+} Best;
+
+/* Lanes hold their instances in increasing order (accel_build sorts them), so
+ * the first lane at the block's smallest distance is the plain loop's pick. */
+static void block_closest(const SphereBlock *blk, Ray r, float tmax, Best *best)
 {
-  scene->accel = NULL;
+  float t[LANES];
+  if (!block_hit_t(blk, r, tmax, t))
+    return;
+  float t_min = t[0];
+  for (int k = 1; k < LANES; k++)
+    t_min = t[k] < t_min ? t[k] : t_min;
+  if (!(t_min <= best->t && t_min < tmax))
+    return;
+  int lane = 0;
+  while (t[lane] != t_min)
+    lane++;
+  if (t_min < best->t || blk->inst[lane] < best->inst) {
+    best->t = t_min;
+    best->inst = blk->inst[lane];
+  }
+}
+
+static bool block_any(const SphereBlock *blk, Ray r, float tmax)
+{
+  float t[LANES];
+  if (!block_hit_t(blk, r, tmax, t))
+    return false;
+  bool any = false;
+  for (int k = 0; k < LANES; k++)
+    any |= t[k] < tmax;
+  return any;
+}
+
+/* Ray's distance into a node's box, INFINITY when it misses it or enters
+ * beyond tmax. The exit distance is widened by 3 ulps' worth (PBRT's
+ * conservative slab test) so rounding never culls a box the ray touches. */
+static float box_enter(const BvhNode *nd, vec3s o, vec3s inv_d, float tmax)
+{
+  float t_in = 0.0f, t_out = tmax;
+  for (int a = 0; a < 3; a++) {
+    float t0 = (nd->lo[a] - o.raw[a]) * inv_d.raw[a];
+    float t1 = (nd->hi[a] - o.raw[a]) * inv_d.raw[a];
+    float near = t0 < t1 ? t0 : t1, far = t0 < t1 ? t1 : t0;
+    far *= 1.0f + 6.0f * 0x1p-24f;
+    t_in = near > t_in ? near : t_in;
+    t_out = far < t_out ? far : t_out;
+  }
+  return t_in <= t_out ? t_in : INFINITY;
+}
+
+static vec3s inverse_dir(vec3s d)
+{
+  return vec_make(1.0f / d.x, 1.0f / d.y, 1.0f / d.z);
+}
+
+/* Closest sphere through the hierarchy: nearer child first, boxes entered
+ * beyond the best distance skipped (<=: an equal distance may still win on
+ * instance index). */
+static void bvh_closest(const struct SceneAccel *acc, Ray r, float tmax, Best *best)
+{
+  vec3s inv_d = inverse_dir(r.d);
+  int stack[STACK], top = 0, node = 0;
+  for (;;) {
+    const BvhNode *nd = &acc->nodes[node];
+    if (box_enter(nd, r.o, inv_d, best->t) <= best->t) {
+      if (nd->meta > 0) {
+        block_closest(&acc->blocks[nd->index], r, tmax, best);
+      } else {
+        bool neg = r.d.raw[-1 - nd->meta] < 0.0f;
+        stack[top++] = nd->index + !neg;
+        node = nd->index + neg;
+        continue;
+      }
+    }
+    if (top == 0)
+      return;
+    node = stack[--top];
+  }
+}
+
+static bool bvh_any(const struct SceneAccel *acc, Ray r, float tmax)
+{
+  vec3s inv_d = inverse_dir(r.d);
+  int stack[STACK], top = 0, node = 0;
+  for (;;) {
+    const BvhNode *nd = &acc->nodes[node];
+    if (box_enter(nd, r.o, inv_d, tmax) < tmax) {
+      if (nd->meta > 0) {
+        if (block_any(&acc->blocks[nd->index], r, tmax))
+          return true;
+      } else {
+        stack[top++] = nd->index + 1;
+        node = nd->index;
+        continue;
+      }
+    }
+    if (top == 0)
+      return false;
+    node = stack[--top];
+  }
 }
 
 const Instance *accel_closest(const Scene *scene, Ray r, float *tmax)
 {
-  (void)scene;
-  (void)r;
-  (void)tmax;
-  return NULL;
+  const struct SceneAccel *acc = scene->accel;
+  Best best = {*tmax, INT_MAX};
+  if (acc->nodes) {
+    bvh_closest(acc, r, *tmax, &best);
+  } else {
+    for (int k = 0; k < acc->n_blocks; k++)
+      block_closest(&acc->blocks[k], r, *tmax, &best);
+  }
+  for (int k = 0; k < acc->n_others; k++) {
+    int idx = acc->others[k];
+    float t = accel_instance_hit_t(&scene->instances[idx], r, *tmax);
+    if (t < best.t || (t == best.t && t < *tmax && idx < best.inst)) {
+      best.t = t;
+      best.inst = idx;
+    }
+  }
+  if (best.inst == INT_MAX)
+    return NULL;
+  *tmax = best.t;
+  return &scene->instances[best.inst];
 }
 
 bool accel_any(const Scene *scene, Ray r, float tmax)
 {
-  (void)scene;
-  (void)r;
-  (void)tmax;
+  const struct SceneAccel *acc = scene->accel;
+  for (int k = 0; k < acc->n_others_lit; k++)
+    if (accel_instance_hit_t(&scene->instances[acc->others[k]], r, tmax) < tmax)
+      return true;
+  if (acc->nodes)
+    return bvh_any(acc, r, tmax);
+  for (int k = 0; k < acc->n_blocks; k++)
+    if (block_any(&acc->blocks[k], r, tmax))
+      return true;
   return false;
+}
+
+/* Which layout RT_ACCEL asks for: 0 plain loop, 1 flat blocks, 2 hierarchy,
+ * -1 automatic. */
+static int layout_wanted(void)
+{
+  const char *env = getenv("RT_ACCEL");
+  if (!env || !*env)
+    return -1;
+  return strcmp(env, "loop") == 0 ? 0 : strcmp(env, "flat") == 0 ? 1
+       : strcmp(env, "bvh") == 0  ? 2 : -1;
+}
+
+/* Fill blocks with the spheres listed in `order` (instance indices), `per`
+ * spheres per block except possibly the last. */
+static void fill_blocks(SphereBlock *blocks, const Scene *scene, const int *order,
+                        int n)
+{
+  for (int k = 0; k < n; k++) {
+    SphereBlock *blk = &blocks[k / LANES];
+    const Sphere *s = &scene->instances[order[k]].sphere;
+    blk->cx[k % LANES] = s->center.x;
+    blk->cy[k % LANES] = s->center.y;
+    blk->cz[k % LANES] = s->center.z;
+    blk->rad[k % LANES] = s->radius;
+    blk->inst[k % LANES] = order[k];
+  }
+}
+
+static SphereBlock *blocks_alloc(int n_blocks)
+{
+  SphereBlock *blocks = aligned_alloc(32, (size_t)n_blocks * sizeof *blocks);
+  for (int k = 0; blocks && k < n_blocks; k++)
+    for (int lane = 0; lane < LANES; lane++) {
+      blocks[k].cx[lane] = blocks[k].cy[lane] = blocks[k].cz[lane] = NAN;
+      blocks[k].rad[lane] = 0.0f;
+      blocks[k].inst[lane] = INT_MAX;
+    }
+  return blocks;
+}
+
+/* The hierarchy over the spheres `ids`: one block per leaf. Boxes are padded
+ * by a relative 2^-16 of the radius and 2^-20 of the coordinates' magnitude so
+ * that a grazing ray the sphere test accepts is never culled by its box. */
+static bool build_tree(struct SceneAccel *acc, const Scene *scene, const int *ids, int n)
+{
+  float(*lo)[3] = malloc((size_t)n * sizeof *lo), (*hi)[3] = malloc((size_t)n * sizeof *hi);
+  Bvh bvh = {0};
+  bool ok = lo && hi;
+  for (int k = 0; ok && k < n; k++) {
+    const Sphere *s = &scene->instances[ids[k]].sphere;
+    float pad = 0x1p-16f * s->radius + 0x1p-20f * (vec_max_abs(s->center) + s->radius);
+    for (int a = 0; a < 3; a++) {
+      lo[k][a] = s->center.raw[a] - s->radius - pad;
+      hi[k][a] = s->center.raw[a] + s->radius + pad;
+    }
+  }
+  ok = ok && bvh_build(&bvh, (const float(*)[3])lo, (const float(*)[3])hi, n, LANES);
+  free(lo);
+  free(hi);
+  int leaves = 0;
+  for (int k = 0; ok && k < bvh.n_nodes; k++)
+    leaves += bvh.nodes[k].meta > 0;
+  acc->blocks = ok ? blocks_alloc(leaves) : NULL;
+  if (!acc->blocks) {
+    bvh_free(&bvh);
+    return false;
+  }
+  int *order = malloc(LANES * sizeof *order);
+  for (int k = 0, leaf = 0; order && k < bvh.n_nodes; k++) {
+    BvhNode *nd = &bvh.nodes[k];
+    if (nd->meta <= 0)
+      continue;
+    for (int m = 0; m < nd->meta; m++) { /* insertion sort: lanes in instance order */
+      int id = ids[bvh.order[nd->index + m]], at = m;
+      for (; at > 0 && order[at - 1] > id; at--)
+        order[at] = order[at - 1];
+      order[at] = id;
+    }
+    fill_blocks(&acc->blocks[leaf], scene, order, nd->meta);
+    nd->index = leaf++;
+  }
+  ok = order != NULL;
+  free(order);
+  acc->n_blocks = leaves;
+  acc->nodes = bvh.nodes;
+  bvh.nodes = NULL;
+  bvh_free(&bvh);
+  return ok;
+}
+
+/* Split the instances into lit spheres (ids) and the rest (acc->others, lit
+ * ones first). Returns the number of spheres, -1 when out of memory. */
+static int sort_instances(struct SceneAccel *acc, const Scene *scene, int **ids)
+{
+  int n = 0;
+  *ids = malloc((size_t)(scene->n_instances + 1) * sizeof **ids);
+  acc->others = malloc((size_t)(scene->n_instances + 1) * sizeof *acc->others);
+  if (!*ids || !acc->others)
+    return -1;
+  for (int k = 0; k < scene->n_instances; k++) {
+    if (k < scene->n_shapes && scene->instances[k].shape == SHAPE_SPHERE)
+      (*ids)[n++] = k;
+    else
+      acc->others[acc->n_others++] = k;
+    if (k < scene->n_shapes)
+      acc->n_others_lit = acc->n_others;
+  }
+  return n;
+}
+
+bool accel_build(Scene *scene)
+{
+  accel_free(scene);
+  int layout = layout_wanted();
+  if (layout == 0)
+    return true;
+  struct SceneAccel *acc = calloc(1, sizeof *acc);
+  int *ids = NULL;
+  int n = acc ? sort_instances(acc, scene, &ids) : -1;
+  bool ok = n >= 0;
+  if (ok && (layout == 2 || (layout < 0 && n > ACCEL_FLAT_MAX)) && n > 0) {
+    ok = build_tree(acc, scene, ids, n);
+  } else if (ok) {
+    acc->n_blocks = (n + LANES - 1) / LANES;
+    acc->blocks = blocks_alloc(acc->n_blocks > 0 ? acc->n_blocks : 1);
+    ok = acc->blocks != NULL;
+    if (ok)
+      fill_blocks(acc->blocks, scene, ids, n);
+  }
+  free(ids);
+  scene->accel = acc;
+  if (!ok) {
+    fprintf(stderr, "accel: out of memory for %d instances\n", scene->n_instances);
+    accel_free(scene);
+  }
+  return ok;
+}
+
+void accel_free(Scene *scene)
+{
+  struct SceneAccel *acc = scene->accel;
+  if (acc) {
+    free(acc->blocks);
+    free(acc->nodes);
+    free(acc->others);
+    free(acc);
+  }
+  scene->accel = NULL;
 }

@@ -1,23 +1,34 @@
-/* Acceleration structure for the scene queries: a bounding volume hierarchy
- * over the spheres, built when a scene has enough of them to pay for it.
- * docs/performance.md. */
+/* Acceleration structure for the scene queries: the lit spheres in blocks of
+ * eight (structure of arrays, one SIMD kernel per block), under a bounding
+ * volume hierarchy when there are more than a few blocks; planes and lights'
+ * shapes in a plain list. docs/performance.md. */
 #ifndef RT_ACCEL_H
 #define RT_ACCEL_H
 
 #include "scene.h"
 
-/* Build scene->accel when worthwhile (else leave it NULL: the plain loop is
- * faster on a handful of objects). False when out of memory. */
+/* Build scene->accel. The environment variable RT_ACCEL chooses the layout for
+ * measurements: "loop" (none: scene.c's plain loop over instances), "flat"
+ * (sphere blocks, no hierarchy), "bvh" (always a hierarchy); unset, the
+ * hierarchy is built from ACCEL_FLAT_MAX spheres on. Results are identical
+ * whatever the layout. False (one line printed) when out of memory. */
 bool accel_build(Scene *scene);
+
+enum { ACCEL_FLAT_MAX = 16 };
 
 /* Free scene->accel; harmless when there is none. */
 void accel_free(Scene *scene);
 
 /* Closest instance hit with t in (0, *tmax); *tmax becomes its distance.
- * NULL when none. */
+ * NULL when none. Same answer as testing every instance in order, keeping the
+ * first of equal distances. */
 const Instance *accel_closest(const Scene *scene, Ray r, float *tmax);
 
 /* True when some lit shape lies on the ray with t in (0, tmax). */
 bool accel_any(const Scene *scene, Ray r, float tmax);
+
+/* Distance to one instance along the ray, INFINITY when missed (its shape's
+ * hit_t function). */
+float accel_instance_hit_t(const Instance *inst, Ray r, float tmax);
 
 #endif

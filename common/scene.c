@@ -159,17 +159,6 @@ bool scene_prepare(Scene *scene, unsigned features)
   return accel_build(scene);
 }
 
-/* Distance to instance `inst` along the ray, INFINITY when missed. */
-static float instance_hit_t(const Instance *inst, Ray r, float tmax)
-{
-  switch (inst->shape) {
-  case SHAPE_SPHERE: return sphere_hit_t(&inst->sphere, r, tmax);
-  case SHAPE_PLANE: return plane_hit_t(&inst->plane, r, tmax);
-  case SHAPE_QUAD: return quad_hit_t(&inst->quad, r, tmax);
-  }
-  return INFINITY;
-}
-
 static void instance_hit_fill(const Instance *inst, Ray r, float t, Hit *hit)
 {
   switch (inst->shape) {
@@ -187,7 +176,7 @@ bool scene_intersect(const Scene *scene, Ray r, float tmax, Hit *hit)
     best = accel_closest(scene, r, &tmax);
   } else {
     for (int k = 0; k < scene->n_instances; k++) {
-      float t = instance_hit_t(&scene->instances[k], r, tmax);
+      float t = accel_instance_hit_t(&scene->instances[k], r, tmax);
       if (t < tmax) {
         tmax = t;
         best = &scene->instances[k];
@@ -205,7 +194,7 @@ bool scene_occluded(const Scene *scene, Ray r, float tmax)
   if (scene->accel)
     return accel_any(scene, r, tmax);
   for (int k = 0; k < scene->n_shapes; k++)
-    if (instance_hit_t(&scene->instances[k], r, tmax) < tmax)
+    if (accel_instance_hit_t(&scene->instances[k], r, tmax) < tmax)
       return true;
   return false;
 }
