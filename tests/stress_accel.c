@@ -1,0 +1,86 @@
+/* The acceleration structure (docs/performance.md) against the definition of
+ * the queries: closest hit = the first instance, in order, at the smallest
+ * sphere_hit_t / plane_hit_t distance; any-hit = some lit shape at t < tmax.
+ * The reference is that loop written out here, over random scenes and rays
+ * (grazing ones included), for the flat blocks and the hierarchy. */
+#include <criterion/criterion.h>
+#include <stdlib.h>
+
+#include "accel.h"
+#include "rng.h"
+
+static float uni(Rng *g, float lo, float hi) { return lo + (hi - lo) * rng_float(g); }
+
+/* n random spheres (some coincident, some tiny) and a plane, prepared. */
+static void random_scene(Scene *s, Rng *g, int n)
+{
+  scene_init(s);
+  Material m = {.name = "m", .diffuse = vec_make(0.5f, 0.5f, 0.5f)};
+  cr_assert(scene_add_material(s, &m));
+  Instance pl = {.shape = SHAPE_PLANE, .plane = plane_make(vec_make(0, 0, 0), vec_make(0, 1, 0)),
+                 .light = -1};
+  cr_assert(scene_add_instance(s, &pl));
+  for (int k = 0; k < n; k++) {
+    Instance in = {.shape = SHAPE_SPHERE, .light = -1};
+    in.sphere.center = vec_make(uni(g, -10, 10), uni(g, 0, 5), uni(g, -10, 10));
+    in.sphere.radius = k % 7 == 0 ? 1e-3f : uni(g, 0.05f, 1.5f);
+    if (k % 11 == 5) /* a duplicate of the previous sphere: equal distances */
+      in.sphere = s->instances[s->n_instances - 1].sphere;
+    cr_assert(scene_add_instance(s, &in));
+  }
+  cr_assert(scene_prepare(s, SCENE_CAMERA | SCENE_LIGHTS));
+}
+
+static Ray random_ray(const Scene *s, Rng *g)
+{
+  Ray r = {.o = vec_make(uni(g, -12, 12), uni(g, 0.5f, 8), uni(g, -12, 12))};
+  if (rng_float(g) < 0.3f) { /* aim at the rim of a sphere: grazing */
+    const Sphere *sp = &s->instances[1 + (int)(rng_float(g) * (float)(s->n_instances - 1))].sphere;
+    vec3s side = glms_vec3_normalize(vec_make(uni(g, -1, 1), uni(g, -1, 1), uni(g, -1, 1)));
+    vec3s aim = glms_vec3_add(sp->center, glms_vec3_scale(side, sp->radius));
+    r.d = glms_vec3_normalize(glms_vec3_sub(aim, r.o));
+  } else {
+    r.d = glms_vec3_normalize(vec_make(uni(g, -1, 1), uni(g, -1, 1), uni(g, -1, 1)));
+  }
+  return r;
+}
+
+static void check_layout(const char *layout, int n)
+{
+  setenv("RT_ACCEL", layout, 1);
+  Rng g = rng_make(7, (uint32_t)n, 0);
+  Scene s;
+  random_scene(&s, &g, n);
+  cr_assert_not_null(s.accel);
+  for (int k = 0; k < 20000; k++) {
+    Ray r = random_ray(&s, &g);
+    float tmax = k % 3 ? INFINITY : uni(&g, 0.1f, 20);
+    float best = tmax, got = tmax;
+    int want = -1;
+    for (int m = 0; m < s.n_instances; m++) {
+      float t = accel_instance_hit_t(&s.instances[m], r, best);
+      if (t < best) {
+        best = t;
+        want = m;
+      }
+    }
+    const Instance *hit = accel_closest(&s, r, &got);
+    cr_assert_eq(hit ? (int)(hit - s.instances) : -1, want, "%s, n = %d, ray %d", layout, n, k);
+    cr_assert(want < 0 || got == best, "%s: t %a, expected %a", layout, got, best);
+    cr_assert_eq(accel_any(&s, r, tmax), want >= 0, "%s, n = %d, ray %d", layout, n, k);
+  }
+  scene_free(&s);
+  unsetenv("RT_ACCEL");
+}
+
+Test(accel, flat_blocks_give_the_plain_loops_answers)
+{
+  for (int n = 1; n <= 40; n += 13)
+    check_layout("flat", n);
+}
+
+Test(accel, hierarchy_gives_the_plain_loops_answers)
+{
+  for (int n = 1; n <= 3000; n = 3 * n + 7)
+    check_layout("bvh", n);
+}
