@@ -79,6 +79,8 @@ int app_run(int argc, char **argv, const Step *step)
   case CLI_USAGE: return 2;
   case CLI_RUN: break;
   }
+  if (o.out_path && !image_format_known(o.out_path))
+    return 2;
   Scene scene;
   if (!load(step, &o, &scene))
     return 1;

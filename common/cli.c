@@ -18,7 +18,7 @@ static void usage(const char *prog, const char *summary, const char *scene)
 {
   printf("usage: %s [options]\n%s\n\n", prog, summary);
   printf("  --scene FILE        scene to render (default: %s)\n"
-         "  -o FILE             output image, .png .jpg .hdr or .pfm (default: %s.png)\n"
+         "  -o, --output FILE   output image, .png .jpg .hdr or .pfm (default: %s.png)\n"
          "  --width W           film width in pixels, 1..%d (default: the scene's)\n"
          "  --height H          film height in pixels, 1..%d (default: the scene's)\n"
          "  --samples N         camera samples per pixel, 1..%d (steps 07-08)\n"
@@ -28,8 +28,9 @@ static void usage(const char *prog, const char *summary, const char *scene)
          "  --threads N         render threads, 1..%d (default: all cores)\n"
          "  --seed S            random seed, 0..4294967295 (default 1)\n"
          "  --tonemap NAME      clamp (default), srgb or reinhard\n"
-         "  --quiet             no progress bar and no summary line\n"
-         "  --help              show this text\n\n"
+         "  -q, --quiet         no progress bar and no summary line\n"
+         "  -h, --help          show this text\n"
+         "Values follow the option (--width 400) or an '=' (--width=400).\n\n"
          "Exit status: 0 done, 1 bad scene or failed render or write, 2 bad usage.\n",
          scene && *scene ? scene : "the step's own picture", prog, FILM_MAX_SIDE,
          FILM_MAX_SIDE, SCENE_MAX_SAMPLES, SCENE_MAX_SAMPLES, RENDER_MAX_THREADS);
@@ -101,6 +102,18 @@ static bool apply(const char *prog, const char *opt, const char *val, Options *o
   return true;
 }
 
+/* True for the options that take a value. */
+static bool takes_value(const char *opt)
+{
+  static const char *const with_value[] = {
+      "--scene", "-o", "--output", "--width", "--height", "--samples",
+      "--light-samples", "--threads", "--seed", "--sampler", "--tonemap", "--adaptive"};
+  for (size_t k = 0; k < sizeof with_value / sizeof with_value[0]; k++)
+    if (strcmp(opt, with_value[k]) == 0)
+      return true;
+  return false;
+}
+
 CliResult cli_parse(int argc, char **argv, const char *prog, const char *summary,
                     const char *default_scene, Options *o)
 {
@@ -125,6 +138,10 @@ CliResult cli_parse(int argc, char **argv, const char *prog, const char *summary
       val = eq + 1;
     } else {
       snprintf(opt, sizeof opt, "%s", arg);
+      if (!takes_value(opt)) {
+        fprintf(stderr, "%s: unknown option '%s' (try --help)\n", prog, arg);
+        return CLI_USAGE;
+      }
       if (k + 1 >= argc) {
         fprintf(stderr, "%s: %s: expected a value, found the end of the command "
                 "line (try --help)\n", prog, arg);

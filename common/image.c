@@ -128,18 +128,23 @@ static bool encode(Out *out, const char *ext, int w, int h, const float *rgb,
   return ok != 0;
 }
 
+bool image_format_known(const char *path)
+{
+  static const char *const known[] = {"png", "jpg", "jpeg", "hdr", "pfm"};
+  const char *ext = extension(path);
+  for (int k = 0; k < 5; k++)
+    if (strcmp(ext, known[k]) == 0)
+      return true;
+  fprintf(stderr, "image: cannot write '%s': unknown extension '.%s' "
+                  "(expected .png, .jpg, .hdr or .pfm)\n", path, ext);
+  return false;
+}
+
 bool image_save(const char *path, int w, int h, const float *rgb, Tonemap tm)
 {
   const char *ext = extension(path);
-  static const char *const known[] = {"png", "jpg", "jpeg", "hdr", "pfm"};
-  bool ok_ext = false;
-  for (int k = 0; k < 5; k++)
-    ok_ext |= strcmp(ext, known[k]) == 0;
-  if (!ok_ext) {
-    fprintf(stderr, "image: cannot write '%s': unknown extension '.%s' "
-                    "(expected .png, .jpg, .hdr or .pfm)\n", path, ext);
+  if (!image_format_known(path))
     return false;
-  }
   size_t len = strlen(path);
   char *tmp = malloc(len + 16);
   if (!tmp)

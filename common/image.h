@@ -19,6 +19,10 @@ bool image_tonemap_parse(const char *name, Tonemap *out);
 /* The byte a linear value maps to under `tm`. */
 unsigned char image_to_byte(float c, Tonemap tm);
 
+/* True when `path` ends in an extension image_save can write; otherwise
+ * prints one line naming the path and the accepted extensions. */
+bool image_format_known(const char *path);
+
 /* Write w x h RGB floats to `path`, format from its extension (.png, .jpg,
  * .hdr, .pfm). The file is written to a temporary name and renamed, so an
  * existing file is replaced only by a complete one. .hdr and .pfm keep the

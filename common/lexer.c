@@ -3,7 +3,6 @@
  * is one line FILE:LINE:COL. Introduced in step 02; docs/scene-format.md. */
 #include "lexer.h"
 
-#include <errno.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -135,7 +134,9 @@ bool lexer_fail_unknown(const Lexer *lx, const char *what,
               found(lx, buf, sizeof buf), hint);
 }
 
-/* Read a finite number; `nonneg` also rejects negative values. */
+/* Read a finite number; `nonneg` also rejects negative values (then `what`
+ * says ">= 0"). An underflow to 0 or a subnormal is accepted (strtof's
+ * ERANGE): only overflow is non-finite. */
 bool lexer_number(Lexer *lx, const char *what, bool nonneg, float *out)
 {
   char buf[64], text[LEXER_TOKEN_MAX];
@@ -144,15 +145,14 @@ bool lexer_number(Lexer *lx, const char *what, bool nonneg, float *out)
   const Token *t = &lx->tok[lx->pos];
   snprintf(text, sizeof text, "%.*s", t->len, t->s);
   char *end;
-  errno = 0;
   float v = strtof(text, &end);
   if (end == text || *end != '\0')
     return lexer_fail(lx, t->col, "expected %s, found %s", what, found(lx, buf, sizeof buf));
-  if (!isfinite(v) || errno == ERANGE)
-    return lexer_fail(lx, t->col, "expected a finite number for %s, found %s", what,
+  if (!isfinite(v))
+    return lexer_fail(lx, t->col, "expected %s, found a non-finite value %s", what,
                 found(lx, buf, sizeof buf));
   if (nonneg && v < 0.0f)
-    return lexer_fail(lx, t->col, "expected %s >= 0, found %s", what, found(lx, buf, sizeof buf));
+    return lexer_fail(lx, t->col, "expected %s, found %s", what, found(lx, buf, sizeof buf));
   lx->pos++;
   *out = v;
   return true;
@@ -250,9 +250,12 @@ bool lexer_fields(Lexer *lx, const char *what, const Key *keys, int n_keys,
       snprintf(fields[k].text, sizeof fields[k].text, "%.*s", lx->tok[lx->pos].len,
                lx->tok[lx->pos].s);
     KeyKind kind = keys[k].kind;
-    bool ok = kind == KEY_NUM    ? lexer_number(lx, keys[k].name, false, &fields[k].v.x)
+    char desc[96]; /* what the values are, for messages: "3 numbers after 'center'" */
+    snprintf(desc, sizeof desc, "%s after '%s'", kind == KEY_NUM ? "a number"
+             : kind == KEY_COLOR ? "3 numbers >= 0" : "3 numbers", keys[k].name);
+    bool ok = kind == KEY_NUM    ? lexer_number(lx, desc, false, &fields[k].v.x)
               : kind == KEY_NAME ? lexer_name(lx, "a material name", fields[k].name)
-                                 : lexer_vec(lx, keys[k].name, kind == KEY_COLOR, &fields[k].v);
+                                 : lexer_vec(lx, desc, kind == KEY_COLOR, &fields[k].v);
     if (!ok)
       return false;
   }
