@@ -5,18 +5,25 @@
 float sphere_hit_t(const Sphere *s, Ray r, float tmax)
 {
   /* BEGIN SOLUTION step 02 */
-  /* With d unit the quadratic is t^2 - 2 b t + c = 0, b = -f.d, f = o - c. */
-  vec3s f = glms_vec3_sub(r.o, s->center);
-  float b = -glms_vec3_dot(f, r.d);
+  /* With d unit the quadratic is t^2 - 2 b t + c = 0, b = -f.d, f = o - c.
+   * The difference of two floats is exact in double, and so are products of
+   * floats: b and c are formed there from the exact f and rounded once. */
+  double fx = (double)r.o.x - s->center.x, fy = (double)r.o.y - s->center.y,
+         fz = (double)r.o.z - s->center.z;
+  float b = (float)-(fx * r.d.x + fy * r.d.y + fz * r.d.z);
+  float c = (float)((fx * fx + fy * fy + fz * fz) - (double)s->radius * s->radius);
   /* The discriminant as r^2 - (distance from the centre to the line)^2: the
-   * textbook b^2 - c cancels catastrophically for far or small spheres. */
+   * textbook b^2 - c cancels catastrophically for far or small spheres. The
+   * perpendicular f + b d is taken twice (Gram-Schmidt): the second pass
+   * removes what rounding left along d, which would reach r past |f| = 1e6 r. */
+  vec3s f = vec_make((float)fx, (float)fy, (float)fz);
   vec3s to_line = glms_vec3_add(f, glms_vec3_scale(r.d, b));
+  to_line = glms_vec3_sub(to_line, glms_vec3_scale(r.d, glms_vec3_dot(to_line, r.d)));
   float disc = s->radius * s->radius - glms_vec3_dot(to_line, to_line);
   if (!(disc >= 0.0f))
     return INFINITY;
   /* The root of larger magnitude without cancellation, the other from the
    * product of the roots, t0 t1 = c. */
-  float c = glms_vec3_dot(f, f) - s->radius * s->radius;
   float q = b + copysignf(sqrtf(disc), b);
   float t0 = c / q, t1 = q;
   if (t0 > t1) {
@@ -40,7 +47,14 @@ void sphere_hit_fill(const Sphere *s, Ray r, float t, Hit *hit)
   /* Re-project o + t d onto the sphere: the error left is a few ulps of
    * |c| + r whatever t was (docs/accuracy.md). */
   vec3s rel = glms_vec3_sub(ray_at(r, t), s->center);
-  rel = glms_vec3_scale(rel, s->radius / glms_vec3_norm(rel));
+  float len = glms_vec3_norm(rel);
+  /* A sphere smaller than the spacing of floats at its position can round
+   * o + t d onto its centre: take the point facing the ray. */
+  if (!(len > 0.0f)) {
+    rel = glms_vec3_negate(r.d);
+    len = 1.0f;
+  }
+  rel = glms_vec3_scale(rel, s->radius / len);
   vec3s n_out = glms_vec3_scale(rel, 1.0f / s->radius);
   hit->t = t;
   hit->p = glms_vec3_add(s->center, rel);
