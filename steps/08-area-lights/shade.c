@@ -48,62 +48,27 @@ static vec3s phong_light(const Material *m, const Hit *hit, vec3s v, vec3s li, v
   return c;
 }
 
-/* How one shading point spreads its N samples over the light. */
+/* BEGIN SOLUTION step 08 */
+/* How one shading point spreads its N samples over the light: step 07's
+ * patterns (sampler_get) on the light's parameters (a, b) in [0,1)^2. */
 typedef struct LightPattern {
-  int kind;        /* SamplerKind: the same patterns as the pixel's samples */
-  int n, nx, ny;   /* N samples; jitter and grid use nx x ny strata */
-  Rng rng;         /* stream of this pixel, camera sample and light */
-  uint32_t shift[2]; /* sobol: random digital shift (XOR) of each axis */
+  SamplerKind kind;
+  uint32_t key;   /* the seed sampler_get is given */
+  uint32_t pixel;
+  int n;          /* samples of this light */
 } LightPattern;
 
-/* BEGIN SOLUTION step 08 */
 static LightPattern pattern_make(const RenderCtx *ctx, int light, int n)
 {
-  LightPattern pat = {.kind = ctx->set->sampler, .n = n};
-  /* nx x ny strata, nx the largest divisor of n up to sqrt(n): 16 -> 4 x 4,
-   * 8 -> 2 x 4, a prime -> 1 x n strips. */
-  pat.nx = (int)sqrtf((float)n);
-  while (n % pat.nx)
-    pat.nx--;
-  pat.ny = n / pat.nx;
-  /* A stream apart from the camera sampler's: the seed is mixed with the
-   * light's index, the stream keyed by pixel and camera sample. */
-  pat.rng = rng_make(ctx->set->seed ^ (0x9e3779b9u * (uint32_t)(light + 1)),
-                     ctx->pixel, ctx->sample);
-  pat.shift[0] = rng_next(&pat.rng);
-  pat.shift[1] = rng_next(&pat.rng);
+  /* A key of its own for each light and camera sample: the first draw of the
+   * stream (seed ^ golden * (light + 1), pixel, camera sample). Keyed by the
+   * seed alone, every camera sample of a pixel would reuse one light pattern
+   * and the light would get N samples per pixel instead of N per sample. */
+  Rng r = rng_make(ctx->set->seed ^ (0x9e3779b9u * (uint32_t)(light + 1)), ctx->pixel,
+                   ctx->sample);
+  LightPattern pat = {.kind = (SamplerKind)ctx->set->sampler, .key = rng_next(&r),
+                      .pixel = ctx->pixel, .n = n};
   return pat;
-}
-
-/* Parameters (a, b) in [0, 1)^2 of sample k on the light. */
-static vec2s pattern_uv(const LightPattern *pat, int k)
-{
-  /* Sample k's own two draws: splitmix's state only grows by a constant, so
-   * this is draws 2k, 2k+1 of the stream, in any order of k. */
-  Rng r = {pat->rng.state + 2u * (uint64_t)k * 0x9e3779b97f4a7c15ull};
-  float ja = 0.5f, jb = 0.5f; /* where in its stratum: centre for grid */
-  switch (pat->kind) {
-  case SAMPLER_CENTER: return (vec2s){{0.5f, 0.5f}};
-  case SAMPLER_RANDOM: ja = rng_float(&r); return (vec2s){{ja, rng_float(&r)}};
-  case SAMPLER_SOBOL: {
-    /* Sobol's first two dimensions, a (0,2) sequence: every 2^m prefix puts
-     * one point in each of 2^m equal boxes of every shape; XOR keeps that. */
-    uint32_t a = 0, b = 0, va = 1u << 31, vb = 1u << 31;
-    for (uint32_t i = (uint32_t)k; i; i >>= 1, va >>= 1, vb ^= vb >> 1)
-      if (i & 1u) {
-        a ^= va;
-        b ^= vb;
-      }
-    a ^= pat->shift[0];
-    b ^= pat->shift[1];
-    return (vec2s){{(float)(a >> 8) * 0x1p-24f, (float)(b >> 8) * 0x1p-24f}};
-  }
-  case SAMPLER_JITTER: ja = rng_float(&r); jb = rng_float(&r); break;
-  default: break;
-  }
-  /* One sample in each of the nx x ny cells, k in raster order. */
-  return (vec2s){{((float)(k % pat->nx) + ja) / (float)pat->nx,
-                  ((float)(k / pat->nx) + jb) / (float)pat->ny}};
 }
 
 /* One of N samples as a point light of power (P/N) cos(theta_light): its
@@ -112,7 +77,7 @@ static vec2s pattern_uv(const LightPattern *pat, int k)
 static vec3s area_incident(const Light *light, const LightPattern *pat, int k,
                            const Hit *hit, vec3s *l, float *dist)
 {
-  vec2s ab = pattern_uv(pat, k);
+  vec2s ab = sampler_get(pat->kind, pat->key, pat->pixel, (uint32_t)k, 0, (uint32_t)pat->n);
   vec3s to_x = glms_vec3_sub(quad_point(&light->quad, ab.x, ab.y), hit->p);
   float r2 = glms_vec3_dot(to_x, to_x);
   *dist = sqrtf(r2);
@@ -146,16 +111,21 @@ static int sample_visible(const Scene *scene, const Light *light,
   return sample_lit(scene, hit, l, dist, ctx);
 }
 
-/* Adaptive sampling: the samples of the four corner cells (the first four
- * of the sequence for the other patterns) are traced first. All lit: the other
+/* Adaptive sampling: four samples spread over the light are traced first:
+ * the corner cells of grid and jitter (step 07's layout: r = floor(sqrt(n))
+ * rows, row q starting at cell floor(q n / r)), the first four samples of
+ * random and Sobol (Sobol's fall one in each quadrant). All lit: the other
  * samples are taken as lit, with no shadow ray; all dark: the light adds
  * nothing. *probe gets the four indices, the result is 1 (all lit), 0 (all
  * dark) or -1 (mixed: every sample needs its shadow ray). */
 static int probe_light(const Scene *scene, const Light *light, const LightPattern *pat,
                        const Hit *hit, int vis[4], int probe[4], RenderCtx *ctx)
 {
+  int n = pat->n, rows = 1;
+  while ((rows + 1) * (rows + 1) <= n)
+    rows++;
   bool cells = pat->kind == SAMPLER_GRID || pat->kind == SAMPLER_JITTER;
-  int corner[4] = {0, pat->nx - 1, pat->n - pat->nx, pat->n - 1};
+  int corner[4] = {0, n / rows - 1, (rows - 1) * n / rows, n - 1};
   int lit = 0;
   for (int j = 0; j < 4; j++) {
     probe[j] = cells ? corner[j] : j;
@@ -245,6 +215,7 @@ vec3s shade_trace(const Scene *scene, Ray ray, RenderCtx *ctx)
     const Light *light = &scene->lights[hit.inst->light];
     return glms_vec3_divs(light->power, hit.t * hit.t);
   }
+  /* STUB: if (hit.inst->light >= 0) return glms_vec3_zero(); */
   /* END SOLUTION */
   return shade_phong(scene, &hit, ray.o, ctx);
 }
