@@ -55,14 +55,17 @@ static bool st_film(Parser *p)
 
 static bool st_colour(Parser *p, int which, const char *word, vec3s *out)
 {
-  return once(p, which, word) && lexer_vec(&p->lx, word, true, out) &&
+  char what[64];
+  snprintf(what, sizeof what, "3 numbers >= 0 after '%s'", word);
+  return once(p, which, word) && lexer_vec(&p->lx, what, true, out) &&
          lexer_expect_end(&p->lx);
 }
 
 static bool st_count(Parser *p, int which, const char *word, int *out)
 {
   return once(p, which, word) &&
-         lexer_int(&p->lx, word, 1, SCENE_MAX_SAMPLES, out) &&
+         lexer_int(&p->lx, which == ONCE_SAMPLES ? "the number of samples"
+                   : "the number of light samples", 1, SCENE_MAX_SAMPLES, out) &&
          lexer_expect_end(&p->lx);
 }
 
