@@ -191,6 +191,16 @@ images: $(BINS)
 	  if [ $$s = 01-film ]; then size=""; else size="$(IMG_SIZE)"; fi; \
 	  $(BUILD)/bin/$$s $$size --threads 2 -o images/$$s.png || exit 1; done
 
+# The pictures of shadow and ambient mistakes in docs/05-shadows.md and
+# docs/06-ambient.md: tools/mistakes.c renders them (on purpose only).
+$(BUILD)/bin/mistakes: $(BUILD)/obj/tools/mistakes.o $(BUILD)/obj/gen/05-shadows-scene.o \
+                       $(LIBCOMMON)
+	@mkdir -p $(@D)
+	@echo "LD $@"
+	@$(CC) $(CFLAGS) $^ $(LDLIBS) -o $@
+mistakes: $(BUILD)/bin/mistakes $(BUILD)/bin/05-shadows $(BUILD)/bin/06-ambient
+	@tools/mistakes.sh $(BUILD)/bin
+
 diffs:
 	@tools/diffs.sh write $(PRESENT)
 check-diffs:
@@ -212,6 +222,7 @@ help:
 	@echo "make bench        measure speed and error, write docs/benchmarks.md"
 	@echo "make images       regenerate the reference images in images/ (on purpose only)"
 	@echo "make diffs        write docs/diffs/NN-name.diff (each step against the previous)"
+	@echo "make mistakes     render the shadow/ambient mistake pictures into docs/img/ (on purpose only)"
 	@echo "make starter      write the student starter tree to $(BUILD)/starter (N=5: steps 1-4 stay solved)"
 	@echo "make clean        remove $(BUILD)/"
 
@@ -219,6 +230,6 @@ starter:
 	@tools/starter.sh $(BUILD)/starter $(N)
 
 .PHONY: all build deps bench-deps test stress test-step sanitize images diffs \
-        check-diffs bench clean help starter
+        check-diffs bench clean help starter mistakes
 
 -include $(shell find $(BUILD)/obj -name '*.d' 2>/dev/null)
