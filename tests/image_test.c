@@ -77,6 +77,8 @@ Test(image, step_matches_its_reference_image, .timeout = 300)
   if (!pass) {
     mkdir(BUILD_DIR "/diff", 0755);
     image_save_diff(diff_path, w, h, out, ref, (float)(t.tol / 255.0), 8.0f);
+  } else {
+    remove(diff_path); /* no stale picture from an earlier failure */
   }
   cr_log_info("%s: %dx%d, %ld of %zu channels over %.2f/255 (%.4f%%, allowed %.4f%%), "
               "max %.2f/255 (allowed %.2f/255), rmse %.3f/255", STEP_NAME, w, h,
