@@ -1,0 +1,299 @@
+/* Stress tests 4-5 of docs/accuracy.md: step 05's render of its own scene,
+ * scaled and translated, against a long-double reference renderer written
+ * here (exact shadow rays that skip the convex shape they leave); and
+ * degenerate scenes that must give no NaN or infinite pixel. */
+#include <criterion/criterion.h>
+#include <stdlib.h>
+
+#include "image.h"
+#include "parser.h"
+#include "stress.h"
+
+#define W 160
+#define H 120
+#define STEP05 BUILD_DIR "/bin/05-shadows"
+#define MISTAKES BUILD_DIR "/bin/mistakes"
+
+typedef long double LD;
+typedef struct L3 {
+  LD x, y, z;
+} L3;
+
+static L3 l3(vec3s v) { return (L3){v.x, v.y, v.z}; }
+static L3 add(L3 a, L3 b) { return (L3){a.x + b.x, a.y + b.y, a.z + b.z}; }
+static L3 sub(L3 a, L3 b) { return (L3){a.x - b.x, a.y - b.y, a.z - b.z}; }
+static L3 mul(L3 a, LD s) { return (L3){a.x * s, a.y * s, a.z * s}; }
+static LD dot(L3 a, L3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+static L3 unit(L3 a) { return mul(a, 1.0L / sqrtl(dot(a, a))); }
+static L3 cross(L3 a, L3 b)
+{
+  return (L3){a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+
+/* Exact (long double) nearest root in (0, tmax) of the unit ray (o, d) with
+ * sphere k, and the ray line's clearance from its silhouette |h - r|. */
+static LD ref_sphere(const Sphere *s, L3 o, L3 d, LD tmax, LD *clear)
+{
+  L3 f = sub(o, l3(s->center));
+  LD b = dot(f, d), r = s->radius, h2 = dot(f, f) - b * b;
+  *clear = -b > 0.0L ? fabsl(sqrtl(h2 > 0.0L ? h2 : 0.0L) - r) : INFINITY;
+  LD disc = r * r - h2;
+  if (disc < 0.0L)
+    return INFINITY;
+  LD t0 = -b - sqrtl(disc), t1 = -b + sqrtl(disc);
+  if (t0 > 0.0L && t0 < tmax)
+    return t0;
+  return (t1 > 0.0L && t1 < tmax) ? t1 : INFINITY;
+}
+
+static LD ref_plane(const Plane *pl, L3 o, L3 d, LD tmax)
+{
+  LD t = dot(sub(l3(pl->point), o), l3(pl->normal)) / dot(d, l3(pl->normal));
+  return (t > 0.0L && t < tmax) ? t : INFINITY;
+}
+
+/* Any shape but `skip` on the segment (o, o + tmax d)? `amb` is set when a
+ * sphere's silhouette passes within `tol` of the segment's line. */
+static bool ref_occluded(const Scene *sc, int skip, L3 o, L3 d, LD tmax, LD tol, bool *amb)
+{
+  bool hit = false;
+  for (int k = 0; k < sc->n_shapes; k++) {
+    const Instance *in = &sc->instances[k];
+    if (k == skip) /* convex shapes: a ray leaving one never meets it again */
+      continue;
+    LD clear = INFINITY;
+    LD t = in->shape == SHAPE_SPHERE ? ref_sphere(&in->sphere, o, d, tmax, &clear)
+                                     : ref_plane(&in->plane, o, d, tmax);
+    hit |= t < tmax;
+    *amb |= clear < tol;
+  }
+  return hit;
+}
+
+/* Phong at the exact hit (p, n) of shape k seen from eye (step 05's model). */
+static L3 ref_shade(const Scene *sc, int k, L3 p, L3 n, L3 eye, LD tol, bool *amb)
+{
+  const Material *m = &sc->materials[sc->instances[k].material];
+  L3 c = {0, 0, 0}, v = unit(sub(eye, p));
+  for (int q = 0; q < sc->n_lights; q++) {
+    const Light *lt = &sc->lights[q];
+    L3 l, li;
+    LD dist;
+    if (lt->type == LIGHT_POINT) {
+      L3 to = sub(l3(lt->position), p);
+      dist = sqrtl(dot(to, to));
+      l = mul(to, 1.0L / dist);
+      li = mul(l3(lt->power), 1.0L / (dist * dist));
+    } else {
+      l = mul(l3(lt->direction), -1.0L);
+      dist = INFINITY;
+      li = l3(lt->irradiance);
+    }
+    LD nl = dot(n, l);
+    if (!(nl > 0.0L) || ref_occluded(sc, k, p, l, dist, tol, amb))
+      continue;
+    L3 r = sub(mul(n, 2.0L * nl), l);
+    LD rv = dot(r, v), lobe = powl(rv > 0.0L ? rv : 0.0L, m->shininess);
+    c.x += li.x * (m->diffuse.x * nl + m->specular.x * lobe);
+    c.y += li.y * (m->diffuse.y * nl + m->specular.y * lobe);
+    c.z += li.z * (m->diffuse.z * nl + m->specular.z * lobe);
+  }
+  return c;
+}
+
+/* The reference colour along the exact camera ray through film point
+ * (nx, ny); *amb is set when a silhouette passes within `tol` (scaled by the
+ * distance travelled) of the camera ray or of a shadow ray. */
+static L3 ref_pixel(const Scene *sc, LD nx, LD ny, LD coord, bool *amb)
+{
+  const Camera *cam = &sc->camera;
+  L3 eye = l3(cam->eye), w = unit(sub(eye, l3(cam->center)));
+  L3 u = unit(cross(l3(cam->up), w)), v = cross(w, u);
+  LD hh = tanl(0.5L * cam->fov_y_deg * 3.14159265358979323846264L / 180.0L), hw = hh * W / H;
+  L3 d = unit(add(add(mul(u, -hw + 2.0L * hw * nx), mul(v, -hh + 2.0L * hh * ny)), mul(w, -1.0L)));
+  int best = -1;
+  LD t = INFINITY, clear_min = INFINITY;
+  for (int k = 0; k < sc->n_shapes; k++) {
+    const Instance *in = &sc->instances[k];
+    LD clear = INFINITY;
+    LD tk = in->shape == SHAPE_SPHERE ? ref_sphere(&in->sphere, eye, d, t, &clear)
+                                      : ref_plane(&in->plane, eye, d, t);
+    clear_min = fminl(clear_min, clear);
+    if (tk < t)
+      t = tk, best = k;
+  }
+  LD tol_cam = 16.0L * 0x1p-24L * (coord + (best >= 0 ? t : 0.0L));
+  *amb |= clear_min < tol_cam;
+  if (best < 0)
+    return l3(sc->background);
+  const Instance *in = &sc->instances[best];
+  L3 p = add(eye, mul(d, t));
+  L3 n = in->shape == SHAPE_SPHERE ? mul(sub(p, l3(in->sphere.center)), 1.0L / in->sphere.radius)
+                                   : l3(in->plane.normal);
+  if (dot(n, d) > 0.0L)
+    n = mul(n, -1.0L);
+  /* The float hit point is off by about tol_cam / cos(incidence). */
+  LD tol = 16.0L * 0x1p-24L * (coord + t / fabsl(dot(n, d))) + tol_cam;
+  return ref_shade(sc, best, p, n, eye, tol, amb);
+}
+
+/* The reference picture as a band [lo, hi] per channel: the exact colour at
+ * the pixel centre and at four points `jitter` away in film units, the
+ * uncertainty of a float camera ray (a few ulps of its angle). amb[] marks
+ * pixels where some silhouette is within the float error of a ray. */
+static void ref_render(const Scene *sc, LD coord, LD jitter, float *lo, float *hi, bool *amb)
+{
+  static const int off[5][2] = {{0, 0}, {1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+  for (int j = 0; j < H; j++) {
+    for (int i = 0; i < W; i++) {
+      size_t q = (size_t)j * W + i;
+      amb[q] = false;
+      for (int k = 0; k < 5; k++) {
+        L3 c = ref_pixel(sc, (i + 0.5L) / W + off[k][0] * jitter,
+                         (j + 0.5L) / H + off[k][1] * jitter, coord, &amb[q]);
+        float rgb[3] = {(float)c.x, (float)c.y, (float)c.z};
+        for (int ch = 0; ch < 3; ch++) {
+          lo[3 * q + ch] = k ? fminf(lo[3 * q + ch], rgb[ch]) : rgb[ch];
+          hi[3 * q + ch] = k ? fmaxf(hi[3 * q + ch], rgb[ch]) : rgb[ch];
+        }
+      }
+    }
+  }
+}
+
+/* The scene file of `base` scaled by s and translated by T (1, 0.5, -0.75);
+ * far: the eye 1000 times farther from the centre with a 1000 times
+ * narrower field of view. Point lights' power scales by s^2 (same image). */
+static void write_scene(const Scene *base, const char *path, double s, double T, bool far)
+{
+  FILE *f = fopen(path, "w");
+  cr_assert(f, "cannot write %s", path);
+#define TX(v, k) (s * (double)(v).raw[k] + T * (const double[]){1.0, 0.5, -0.75}[k])
+#define PT(v) TX(v, 0), TX(v, 1), TX(v, 2)
+  const Camera *c = &base->camera;
+  double fov = c->fov_y_deg, m = far ? 1000.0 : 1.0;
+  vec3s eye = glms_vec3_add(c->center, glms_vec3_scale(glms_vec3_sub(c->eye, c->center), (float)m));
+  if (far)
+    fov = 2.0 * atan(tan(0.5 * fov * GLM_PI / 180.0) / m) * 180.0 / GLM_PI;
+  fprintf(f, "film %d %d\ncamera eye %.9g %.9g %.9g center %.9g %.9g %.9g up %.9g %.9g %.9g fov %.9g\n",
+          W, H, PT(eye), PT(c->center), c->up.x, c->up.y, c->up.z, fov);
+  fprintf(f, "background %.9g %.9g %.9g\n", base->background.x, base->background.y, base->background.z);
+  for (int k = 0; k < base->n_materials; k++) {
+    const Material *mt = &base->materials[k];
+    fprintf(f, "material %s ambient %.9g %.9g %.9g diffuse %.9g %.9g %.9g specular %.9g %.9g %.9g "
+            "shininess %.9g\n", mt->name, mt->ambient.x, mt->ambient.y, mt->ambient.z,
+            mt->diffuse.x, mt->diffuse.y, mt->diffuse.z, mt->specular.x, mt->specular.y,
+            mt->specular.z, mt->shininess);
+  }
+  for (int k = 0; k < base->n_shapes; k++) {
+    const Instance *in = &base->instances[k];
+    const char *mat = base->materials[in->material].name;
+    if (in->shape == SHAPE_PLANE)
+      fprintf(f, "plane point %.9g %.9g %.9g normal %.9g %.9g %.9g material %s\n",
+              PT(in->plane.point), in->plane.normal.x, in->plane.normal.y, in->plane.normal.z, mat);
+    else
+      fprintf(f, "sphere center %.9g %.9g %.9g radius %.9g material %s\n", PT(in->sphere.center),
+              s * in->sphere.radius, mat);
+  }
+  for (int k = 0; k < base->n_lights; k++) {
+    const Light *lt = &base->lights[k];
+    if (lt->type == LIGHT_POINT)
+      fprintf(f, "light point position %.9g %.9g %.9g power %.9g %.9g %.9g\n", PT(lt->position),
+              s * s * lt->power.x, s * s * lt->power.y, s * s * lt->power.z);
+    else if (lt->type == LIGHT_DIRECTIONAL)
+      fprintf(f, "light directional direction %.9g %.9g %.9g irradiance %.9g %.9g %.9g\n",
+              lt->direction.x, lt->direction.y, lt->direction.z, lt->irradiance.x,
+              lt->irradiance.y, lt->irradiance.z);
+  }
+#undef PT
+#undef TX
+  fclose(f);
+}
+
+/* Render `scene` with `cmd` (a binary and its variant) into a new buffer. */
+static float *render_with(const char *cmd, const char *scene, const char *out)
+{
+  char line[1024];
+  snprintf(line, sizeof line, "%s --scene %s -o %s --threads 2 --quiet", cmd, scene, out);
+  cr_assert(system(line) == 0, "failed: %s", line);
+  int w, h;
+  float *rgb;
+  cr_assert(image_load(out, &w, &h, &rgb) && w == W && h == H, "cannot read %s", out);
+  return rgb;
+}
+
+typedef struct Count {
+  long acne, leak;
+} Count;
+
+/* Pixels outside the reference band by more than shading round-off (1e-3
+ * relative), undecidable ones aside: darker = acne, brighter = leak. */
+static Count compare(const float *img, const float *lo, const float *hi, const bool *amb)
+{
+  Count n = {0, 0};
+  for (int p = 0; p < W * H; p++) {
+    if (amb[p])
+      continue;
+    bool dark = false, bright = !isfinite(img[3 * p]);
+    for (int c = 0; c < 3; c++) {
+      float x = img[3 * p + c];
+      dark |= x < lo[3 * p + c] - 1e-3f * (1.0f + lo[3 * p + c]);
+      bright |= x > hi[3 * p + c] + 1e-3f * (1.0f + hi[3 * p + c]);
+    }
+    n.acne += dark;
+    n.leak += bright && !dark;
+  }
+  return n;
+}
+
+Test(stress, t4_no_acne_and_no_leak_at_any_scale, .timeout = 600)
+{
+  Scene base;
+  scene_init(&base);
+  cr_assert(parser_load_file("scenes/spheres.scene", &base), "cannot load the step-05 scene");
+  stress_table("t4_shadows", "Test 4: pixels with shadow acne (darker than the reference) / "
+               "light leaks (brighter), step 05 against a long-double reference, 160x120; "
+               "fixed epsilon = tools/mistakes.c epsilon=1e-4",
+               "| scale | translation | camera | undecidable | step 05 acne | step 05 leak | "
+               "fixed-eps acne | fixed-eps leak |\n|---|---|---|---|---|---|---|---|");
+  long bad = 0;
+  float *lo = malloc(sizeof(float) * 3 * W * H), *hi = malloc(sizeof(float) * 3 * W * H);
+  bool *amb = malloc(sizeof(bool) * W * H);
+  for (int e = -4; e <= 5; e++) {
+    for (int tr = 0; tr < 2; tr++) {
+      for (int far = 0; far < 2; far++) {
+        double s = pow(10.0, e), T = tr ? fmin(1e5, 1e3 * s) : 0.0;
+        char scene[256], out[256], outeps[256];
+        snprintf(scene, sizeof scene, STRESS_DIR "/t4_%+d_%d_%d.scene", e, tr, far);
+        snprintf(out, sizeof out, STRESS_DIR "/t4_%+d_%d_%d.pfm", e, tr, far);
+        snprintf(outeps, sizeof outeps, STRESS_DIR "/t4_%+d_%d_%d_eps.pfm", e, tr, far);
+        write_scene(&base, scene, s, T, far);
+        Scene sc;
+        scene_init(&sc);
+        cr_assert(parser_load_file(scene, &sc));
+        /* Coordinates up to `coord`; a float camera ray's angle is good to
+         * a few 2^-24, plus the rounding of its hit point seen from the eye. */
+        double coord = fmax(T, 10.0 * s * (far ? 1000.0 : 1.0));
+        double dist = 9.0 * s * (far ? 1000.0 : 1.0), half = tan(0.5 * sc.camera.fov_y_deg * GLM_PI / 180.0);
+        double jitter = 4.0 * 0x1p-24 * (1.0 + coord / dist) / (2.0 * half);
+        ref_render(&sc, coord, jitter, lo, hi, amb);
+        float *img = render_with(STEP05, scene, out);
+        float *eps = render_with(MISTAKES " epsilon=1e-4", scene, outeps);
+        long n_amb = 0;
+        for (int p = 0; p < W * H; p++)
+          n_amb += amb[p];
+        Count rob = compare(img, lo, hi, amb), txt = compare(eps, lo, hi, amb);
+        stress_row("t4_shadows", "| %g | %g | %s | %ld | %ld | %ld | %ld | %ld |", s, T,
+                   far ? "1000x, narrow" : "usual", n_amb, rob.acne, rob.leak, txt.acne, txt.leak);
+        cr_expect(rob.acne == 0 && rob.leak == 0, "scale %g, translation %g, far %d: %ld acne, "
+                  "%ld leak pixels", s, T, far, rob.acne, rob.leak);
+        bad += rob.acne + rob.leak;
+        free(img), free(eps);
+        scene_free(&sc);
+      }
+    }
+  }
+  free(lo), free(hi), free(amb);
+  scene_free(&base);
+  cr_log_info("test 4: %ld acne or leak pixels over all scales", bad);
+}
