@@ -157,10 +157,11 @@ $(BUILD)/tests/stress: $(STRESS_OBJ) $(LIBCOMMON)
 	@$(CC) $(CFLAGS) $^ $(LDLIBS) -lcriterion -lmpfr -lgmp -o $@
 STRESSBIN := $(if $(STRESS_TESTS),$(BUILD)/tests/stress)
 
-test: $(TESTBIN) $(STRESSBIN)
+test: $(TESTBIN) $(STRESSBIN) $(BUILD)/bin/05-shadows $(BUILD)/bin/mistakes
 	@tests/run.sh $(TESTBIN) $(STRESSBIN)
 
-stress: $(STRESSBIN)
+# The stress tests render through step 05 and tools/mistakes.c (docs/accuracy.md).
+stress: $(STRESSBIN) $(BUILD)/bin/05-shadows $(BUILD)/bin/mistakes
 	@tests/run.sh --verbose $(STRESSBIN)
 
 # make test-step N  (or N=3): one step's unit tests and image test.
