@@ -44,7 +44,7 @@ unsigned char image_to_byte(float c, Tonemap tm)
   if (tm != TONEMAP_CLAMP)
     c = srgb_encode(c);
   /* Round to nearest: the lecture truncates, which darkens by half a code. */
-  return (unsigned char)lrintf(255.0f * c);
+  return (unsigned char)roundf(255.0f * c); /* halves round up, as round() */
   /* STUB: return 0; */
   /* END SOLUTION */
 }
