@@ -50,25 +50,30 @@ float accel_instance_hit_t(const Instance *inst, Ray r, float tmax)
 static bool block_hit_t(const SphereBlock *restrict blk, Ray r, float tmax,
                         float *restrict t)
 {
-  float ox = r.o.x, oy = r.o.y, oz = r.o.z, dx = r.d.x, dy = r.d.y, dz = r.d.z;
+  float dx = r.d.x, dy = r.d.y, dz = r.d.z;
   float b[LANES], disc[LANES];
   int any = 0;
   for (int k = 0; k < LANES; k++) {
-    float fx = ox - blk->cx[k], fy = oy - blk->cy[k], fz = oz - blk->cz[k];
-    b[k] = -(fx * dx + fy * dy + fz * dz);
-    float lx = fx + dx * b[k], ly = fy + dy * b[k], lz = fz + dz * b[k];
-    float rr = blk->rad[k] * blk->rad[k];
-    disc[k] = rr - (lx * lx + ly * ly + lz * lz);
+    /* f = o - c exactly in double; b rounded once from it. */
+    double fx = (double)r.o.x - blk->cx[k], fy = (double)r.o.y - blk->cy[k],
+           fz = (double)r.o.z - blk->cz[k];
+    b[k] = (float)-(fx * dx + fy * dy + fz * dz);
+    /* The perpendicular f + b d, then a second Gram-Schmidt pass along d. */
+    float lx = (float)fx + dx * b[k], ly = (float)fy + dy * b[k], lz = (float)fz + dz * b[k];
+    float along = lx * dx + ly * dy + lz * dz;
+    lx = lx - dx * along;
+    ly = ly - dy * along;
+    lz = lz - dz * along;
+    disc[k] = blk->rad[k] * blk->rad[k] - (lx * lx + ly * ly + lz * lz);
     any |= disc[k] >= 0.0f;
   }
   if (!any)
     return false;
   for (int k = 0; k < LANES; k++) {
-    /* c = |f|^2 - r^2 in double (products of floats are exact there), rounded
-     * once, as sphere.c does. */
-    double fx = (double)(ox - blk->cx[k]), fy = (double)(oy - blk->cy[k]),
-           fz = (double)(oz - blk->cz[k]), rad = (double)blk->rad[k];
-    float c = (float)((fx * fx + fy * fy + fz * fz) - rad * rad);
+    /* c = |f|^2 - r^2 in double (products of floats are exact), rounded once. */
+    double fx = (double)r.o.x - blk->cx[k], fy = (double)r.o.y - blk->cy[k],
+           fz = (double)r.o.z - blk->cz[k], rad = (double)blk->rad[k];
+    float c = (float)((fx * fx + fy * fy + fz * fz) - rad * blk->rad[k]);
     float q = b[k] + copysignf(sqrtf(disc[k] >= 0.0f ? disc[k] : 0.0f), b[k]);
     float t0 = c / q, t1 = q;
     float lo = t0 > t1 ? t1 : t0, hi = t0 > t1 ? t0 : t1;
@@ -117,8 +122,8 @@ static bool block_any(const SphereBlock *blk, Ray r, float tmax)
   return any;
 }
 
-/* Ray's distance into a node's box, INFINITY when it misses it or enters
- * beyond tmax. The exit distance is widened by 3 ulps' worth (PBRT's
+/* Ray's distance into a node's box; NaN (every comparison false) when it
+ * misses it or enters beyond tmax. The exit distance is widened by 3 ulps' worth (PBRT's
  * conservative slab test) so rounding never culls a box the ray touches. */
 static float box_enter(const BvhNode *nd, vec3s o, vec3s inv_d, float tmax)
 {
@@ -131,7 +136,7 @@ static float box_enter(const BvhNode *nd, vec3s o, vec3s inv_d, float tmax)
     t_in = near > t_in ? near : t_in;
     t_out = far < t_out ? far : t_out;
   }
-  return t_in <= t_out ? t_in : INFINITY;
+  return t_in <= t_out ? t_in : NAN;
 }
 
 static vec3s inverse_dir(vec3s d)
