@@ -99,38 +99,22 @@ static bool sample_lit(const Scene *scene, const Hit *hit, vec3s l, float dist,
   return !scene_occluded(scene, ray_spawn(hit, l), dist * (1.0f - 0x1p-20f));
 }
 
-/* 1 when sample k lights the point, 0 when shadowed or facing away. */
-static int sample_visible(const Scene *scene, const Light *light,
-                          const LightPattern *pat, int k, const Hit *hit, RenderCtx *ctx)
+/* Adaptive sampling: shadow rays to the light's four corners first. All
+ * lit: the samples are taken as lit, with no shadow ray of their own; all
+ * dark (or facing away): the light adds nothing. Returns 1 (all lit), 0 (all
+ * dark) or -1 (mixed: every sample needs its shadow ray). The corners are the
+ * points of the light farthest apart, the likeliest to see an occluder's edge. */
+static int probe_corners(const Scene *scene, const Light *light, const Hit *hit,
+                         RenderCtx *ctx)
 {
-  vec3s l;
-  float dist;
-  vec3s li = area_incident(light, pat, k, hit, &l, &dist);
-  if (vec_is_zero(li) || !(glms_vec3_dot(hit->n, l) > 0.0f))
-    return 0;
-  return sample_lit(scene, hit, l, dist, ctx);
-}
-
-/* Adaptive sampling: four samples spread over the light are traced first:
- * the corner cells of grid and jitter (step 07's layout: r = floor(sqrt(n))
- * rows, row q starting at cell floor(q n / r)), the first four samples of
- * random and Sobol (Sobol's fall one in each quadrant). All lit: the other
- * samples are taken as lit, with no shadow ray; all dark: the light adds
- * nothing. *probe gets the four indices, the result is 1 (all lit), 0 (all
- * dark) or -1 (mixed: every sample needs its shadow ray). */
-static int probe_light(const Scene *scene, const Light *light, const LightPattern *pat,
-                       const Hit *hit, int vis[4], int probe[4], RenderCtx *ctx)
-{
-  int n = pat->n, rows = 1;
-  while ((rows + 1) * (rows + 1) <= n)
-    rows++;
-  bool cells = pat->kind == SAMPLER_GRID || pat->kind == SAMPLER_JITTER;
-  int corner[4] = {0, n / rows - 1, (rows - 1) * n / rows, n - 1};
   int lit = 0;
   for (int j = 0; j < 4; j++) {
-    probe[j] = cells ? corner[j] : j;
-    vis[j] = sample_visible(scene, light, pat, probe[j], hit, ctx);
-    lit += vis[j];
+    vec3s to_x = glms_vec3_sub(quad_point(&light->quad, (float)(j & 1), (float)(j >> 1)),
+                               hit->p);
+    float dist = glms_vec3_norm(to_x);
+    vec3s l = glms_vec3_scale(to_x, 1.0f / dist);
+    if (glms_vec3_dot(hit->n, l) > 0.0f && glms_vec3_dot(l, light->quad.normal) < 0.0f)
+      lit += sample_lit(scene, hit, l, dist, ctx);
   }
   return lit == 4 ? 1 : lit == 0 ? 0 : -1;
 }
@@ -146,10 +130,8 @@ vec3s shade_area(const Scene *scene, int light_index, const Hit *hit, vec3s eye,
   vec3s v = glms_vec3_normalize(glms_vec3_sub(eye, hit->p));
   int n = ctx->set->light_samples > 0 ? ctx->set->light_samples : 1;
   LightPattern pat = pattern_make(ctx, light_index, n);
-  /* Adaptive only pays with more samples than the four probes. */
-  int vis[4] = {0}, probe[4] = {-1, -1, -1, -1}, agreed = -1;
-  if (ctx->set->adaptive > 0.0f && n > 4)
-    agreed = probe_light(scene, light, &pat, hit, vis, probe, ctx);
+  /* Adaptive only pays with more samples than the four corner rays. */
+  int agreed = ctx->set->adaptive > 0.0f && n > 4 ? probe_corners(scene, light, hit, ctx) : -1;
   if (agreed == 0)
     return c;
   for (int k = 0; k < n; k++) {
@@ -158,13 +140,8 @@ vec3s shade_area(const Scene *scene, int light_index, const Hit *hit, vec3s eye,
     vec3s li = area_incident(light, &pat, k, hit, &l, &dist);
     if (vec_is_zero(li) || !(glms_vec3_dot(hit->n, l) > 0.0f))
       continue;
-    if (agreed < 0) { /* every sample's own shadow test; probes already know */
-      int j = 0;
-      while (j < 4 && probe[j] != k)
-        j++;
-      if (!(j < 4 ? vis[j] : sample_lit(scene, hit, l, dist, ctx)))
-        continue;
-    }
+    if (agreed < 0 && !sample_lit(scene, hit, l, dist, ctx))
+      continue;
     c = glms_vec3_add(c, phong_light(m, hit, v, li, l));
   }
   /* END SOLUTION */

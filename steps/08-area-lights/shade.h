@@ -16,8 +16,8 @@ vec3s shade_incident(const Scene *scene, const Light *light, const Hit *hit,
  * point light of power (P/N) cos(theta_light) (zero when the point is behind
  * the light) that counts only when nothing lies between. The samples follow
  * ctx->set->sampler's pattern, keyed by seed, light, pixel and camera sample;
- * with ctx->set->adaptive > 0 four samples are tested first and the rest skip
- * their shadow rays when those four agree. Shadow rays are counted in ctx->rays. */
+ * with ctx->set->adaptive > 0 shadow rays to the light's four corners come
+ * first, and the samples skip theirs when the four agree. Shadow rays are counted in ctx->rays. */
 vec3s shade_area(const Scene *scene, int light_index, const Hit *hit, vec3s eye,
                  RenderCtx *ctx);
 
