@@ -98,7 +98,7 @@ int app_run(int argc, char **argv, const Step *step)
   sampler_parse(o.sampler ? o.sampler : step->sampler ? step->sampler : "center", &kind);
   RenderSettings set = {.threads = o.threads, .seed = o.seed, .samples = scene.samples,
                         .light_samples = scene.light_samples, .sampler = (int)kind,
-                        .adaptive = o.adaptive > 0.0f ? o.adaptive : 0.0f,
+                        .adaptive = o.adaptive >= 0.0f ? o.adaptive : step->adaptive,
                         .progress = !o.quiet};
   Film film;
   char default_out[96];

@@ -11,6 +11,7 @@ typedef struct Step {
   const char *summary;   /* one line for --help */
   unsigned features;     /* SceneFeature bits the step renders */
   const char *sampler;   /* default sampler name, NULL when the step has none */
+  float adaptive;        /* default --adaptive threshold, 0 = off */
   RenderPixelFn pixel;   /* the step's per-pixel work */
 } Step;
 

@@ -89,7 +89,8 @@ Test(antialiasing, stratified_patterns_converge_to_the_covered_fraction)
   for (int s = 0; s < 3; s++)
     for (int k = 2; k <= 64; k *= 2) {
       char args[128], tag[64];
-      snprintf(args, sizeof args, "--sampler %s --samples %d --quiet", kinds[s], k * k);
+      snprintf(args, sizeof args, "--sampler %s --samples %d --adaptive 0 --quiet", kinds[s],
+               k * k);
       snprintf(tag, sizeof tag, "conv-%s-%d", kinds[s], k);
       double v = edge_pixel(tag, args), bound = (2.0 * k - 1.0) / (k * k);
       cr_expect(fabs(v - EDGE_FRACTION) <= bound, "%s, %d samples: %.6f, exact %.2f, bound %.5f",
@@ -106,7 +107,8 @@ Test(antialiasing, random_sampling_is_unbiased_over_seeds)
   const int seeds = 24, n = 64;
   for (int seed = 1; seed <= seeds; seed++) {
     char args[128], tag[64];
-    snprintf(args, sizeof args, "--sampler random --samples %d --seed %d --quiet", n, seed);
+    snprintf(args, sizeof args, "--sampler random --samples %d --adaptive 0 --seed %d --quiet", n,
+             seed);
     snprintf(tag, sizeof tag, "random-%d", seed);
     double v = edge_pixel(tag, args);
     sum += v;
@@ -119,15 +121,16 @@ Test(antialiasing, random_sampling_is_unbiased_over_seeds)
   cr_expect(var > 0.0, "the estimate is the same for every seed");
 }
 
-/* Adaptive, grid: the first 4 samples are the 2 x 2 grid; (0.75, 0.25) is in
- * the triangle (0.6 - 0.175 - 0.24 > 0), (0.25, 0.75) is not, so they
- * disagree and the other 1024 samples come as a 32 x 32 grid. The estimate
- * is (4 * 1/4 + 1024 m) / 1028 with |m - 0.28| <= 63/1024 (the bound above),
- * so it errs by at most (4 * 0.03 + 63) / 1028. */
+/* Adaptive, Sobol, 1024 samples: the first quarter, 256 points, has one
+ * point in each of the 16 x 16 square boxes; some boxes lie wholly inside
+ * the triangle (the box [0.75, 0.8125) x [0, 0.0625), say: its corners all
+ * have 0.8 nx - 0.7 ny - 0.24 > 0) and some wholly outside ([0, 0.0625)^2),
+ * so the samples disagree and all 1024 points are traced: one in each
+ * 32 x 32 box, hence the bound (2 * 32 - 1) / 1024 above. */
 Test(antialiasing, adaptive_spends_the_budget_on_an_edge_pixel)
 {
-  double v = edge_pixel("adaptive", "--sampler grid --samples 1028 --adaptive 0.01 --quiet");
-  double bound = (4.0 * 0.03 + 63.0) / 1028.0;
+  double v = edge_pixel("adaptive", "--sampler sobol --samples 1024 --adaptive 0.01 --quiet");
+  double bound = 63.0 / 1024.0;
   cr_expect(fabs(v - EDGE_FRACTION) <= bound, "%.6f, exact %.2f, bound %.5f", v, EDGE_FRACTION,
             bound);
 }
@@ -141,8 +144,8 @@ static double mrays(const char *summary)
 }
 
 /* A 400 x 100 film of background only: every pixel's samples agree, so
- * adaptive sampling traces 4 of the 64 samples, 400 * 100 * 4 = 0.16 Mrays;
- * without it (threshold 0) all 64: 2.56 Mrays. */
+ * adaptive sampling traces the first quarter of the 64 samples,
+ * 400 * 100 * 16 = 0.64 Mrays; without it (threshold 0) all 64: 2.56 Mrays. */
 Test(antialiasing, adaptive_stops_after_four_samples_where_they_agree)
 {
   static const char empty[] = "film 400 100\nbackground 0.2 0.3 0.4\n";
@@ -150,7 +153,7 @@ Test(antialiasing, adaptive_stops_after_four_samples_where_they_agree)
   int w, h;
   free(render("agree-on", empty, "--samples 64 --adaptive 0.01", &w, &h, summary,
               sizeof summary));
-  cr_expect(fabs(mrays(summary) - 0.16) < 0.001, "adaptive: %s", summary);
+  cr_expect(fabs(mrays(summary) - 0.64) < 0.001, "adaptive: %s", summary);
   free(render("agree-off", empty, "--samples 64 --adaptive 0", &w, &h, summary,
               sizeof summary));
   cr_expect(fabs(mrays(summary) - 2.56) < 0.001, "not adaptive: %s", summary);
