@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# Render the pictures of docs/07-antialiasing.md into docs/img/: sample
+# patterns of one pixel and the typical antialiasing mistakes beside step
+# 07's answers. Builds tools/aa-mistakes.c itself. Usage: tools/aa-mistakes.sh
+# (after make build).
+set -euo pipefail
+bin=build/bin
+make --no-print-directory build/bin/07-antialiasing >/dev/null
+# The Makefile's -O3 -march=native: cglm aligns its matrices by instruction
+# set, so Scene's layout must match libcommon's.
+gcc -std=c11 -O3 -march=native -fopenmp -ffp-contract=off -D_POSIX_C_SOURCE=200809L -Wall -Wextra \
+  -Werror -Icommon -Isteps/07-antialiasing $(pkg-config --cflags cglm stb) \
+  tools/aa-mistakes.c steps/07-antialiasing/shade.c build/obj/gen/07-antialiasing-scene.o \
+  build/libcommon.a -lstb -lm -o $bin/aa-mistakes
+mkdir -p docs/img
+for s in grid random jitter sobol; do
+  $bin/aa-mistakes points $s 16 docs/img/07-points-$s.png
+done
+size=(--width 400 --height 300 --threads 2 --quiet)
+tmp=build/aa-mistakes
+mkdir -p $tmp
+# run NAME PROGRAM ARGS...: render NAME, then the zoomed box of the pearl rows.
+run() {
+  local name=$1; shift
+  echo "$*" "${size[*]}" -o docs/img/$name.png
+  "$@" "${size[@]}" -o docs/img/$name.png
+  "$@" "${size[@]}" -o $tmp/$name.pfm
+  $bin/aa-mistakes zoom $tmp/$name.pfm 96 95 100 50 docs/img/$name-zoom.png
+}
+s07=$bin/07-antialiasing
+run 07-center-1     $s07 --sampler center --samples 1
+run 07-grid-4       $s07 --sampler grid --samples 4 --adaptive 0
+run 07-random-4     $s07 --sampler random --samples 4 --adaptive 0
+run 07-jitter-4     $s07 --sampler jitter --samples 4 --adaptive 0
+run 07-sobol-4      $s07 --sampler sobol --samples 4 --adaptive 0
+run 07-same-numbers $bin/aa-mistakes same-numbers --sampler jitter --samples 4
+run 07-default      $s07
+run 07-converged    $s07 --sampler jitter --samples 1024 --adaptive 0
