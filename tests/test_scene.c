@@ -93,27 +93,41 @@ Test(scene, closest_hit_among_many_spheres_matches_brute_force)
     add_sphere(&s, (float)(k % 20) - 9.5f, (float)(k / 20) - 9.5f, -10.0f - (float)(k % 7),
                0.3f + 0.05f * (float)(k % 5), 0);
   cr_assert(scene_prepare(&s, SCENE_CAMERA | SCENE_LIGHTS));
+  int decided = 0;
   for (int q = 0; q < 400; q++) {
     Ray r = ray(0.1f, -0.2f, 5.0f, 0.04f * (float)(q % 20) - 0.4f,
                 0.04f * (float)(q / 20) - 0.4f, -1.0f);
     long double best = INFINITY;
+    bool grazing = false;
     for (int k = 0; k < s.n_shapes; k++) {
       const Sphere *sp = &s.instances[k].sphere;
       long double f[3] = {(long double)r.o.x - sp->center.x, (long double)r.o.y - sp->center.y,
                           (long double)r.o.z - sp->center.z};
-      long double b = f[0] * r.d.x + f[1] * r.d.y + f[2] * r.d.z;
-      long double c = f[0] * f[0] + f[1] * f[1] + f[2] * f[2] - (long double)sp->radius * sp->radius;
-      long double dd = (long double)r.d.x * r.d.x + (long double)r.d.y * r.d.y + (long double)r.d.z * r.d.z;
-      long double disc = b * b - dd * c;
-      if (disc >= 0.0L && (-b - sqrtl(disc)) / dd > 0.0L)
-        best = fminl(best, (-b - sqrtl(disc)) / dd);
+      long double len = sqrtl((long double)r.d.x * r.d.x + (long double)r.d.y * r.d.y +
+                              (long double)r.d.z * r.d.z);
+      long double b = (f[0] * r.d.x + f[1] * r.d.y + f[2] * r.d.z) / len;
+      long double ff = f[0] * f[0] + f[1] * f[1] + f[2] * f[2];
+      long double c = ff - (long double)sp->radius * sp->radius;
+      long double disc = b * b - c; /* r^2 - (distance from the centre to the line)^2 */
+      /* Hit or miss is only decidable in float when the line clears the
+       * silhouette by more than a few float roundings of the distance
+       * (docs/accuracy.md, stress test 2): such rays are not asserted. */
+      long double clearance = sp->radius - sqrtl(fmaxl(0.0L, ff - b * b));
+      if (fabsl(clearance) < 8.0L * 0x1p-24L * sqrtl(ff))
+        grazing = true;
+      if (disc >= 0.0L && -b - sqrtl(disc) > 0.0L)
+        best = fminl(best, -b - sqrtl(disc));
     }
+    if (grazing)
+      continue;
+    decided++;
     Hit h;
     bool hit = scene_intersect(&s, r, INFINITY, &h);
     cr_expect(hit == isfinite(best), "ray %d: hit %d, expected %d", q, hit, isfinite(best));
     if (hit && isfinite(best))
       cr_expect(fabsl(h.t - best) <= 1e-4L, "ray %d: t = %.9g, expected %.9Lg", q, h.t, best);
   }
+  cr_expect(decided > 350, "only %d of 400 rays clear every silhouette", decided);
   scene_free(&s);
 }
 
