@@ -6,8 +6,9 @@
 #include "shade.h"
 
 /* BEGIN SOLUTION step 07 */
-/* Adaptive sampling looks at this many samples first. */
-enum { ADAPTIVE_FIRST = 4 };
+/* Adaptive sampling looks first at a quarter of the budget, at least 4
+ * samples: fewer miss slivers of thin objects (docs/07-antialiasing.md). */
+enum { ADAPTIVE_MIN_FIRST = 4 };
 
 /* Trace samples [first, first + count) of the pattern and add them to `acc`;
  * `lo` and `hi` keep each channel's smallest and largest displayed value. */
@@ -33,16 +34,19 @@ static void trace_samples(const Scene *scene, int i, int j, RenderCtx *ctx, int 
 /* END SOLUTION */
 
 /* The box filter: the pixel is the mean of its samples. With --adaptive T,
- * the first ADAPTIVE_FIRST samples decide: when no channel's shown values
- * spread more than T, they are the answer; otherwise the rest of the budget
- * (the scene's samples) is spent as a second pattern over the whole pixel. */
+ * the first quarter of the budget (at least 4 samples) decides: when no
+ * channel's shown values spread more than T, they are the answer; otherwise
+ * the rest of the budget (the scene's samples) is spent as a second pattern
+ * over the whole pixel. */
 static vec3s pixel(const Scene *scene, const Film *film, int i, int j, RenderCtx *ctx)
 {
   /* BEGIN SOLUTION step 07 */
   (void)film;
   int n = scene->samples;
   float threshold = ctx->set->adaptive;
-  int first = threshold > 0.0f && n > ADAPTIVE_FIRST ? ADAPTIVE_FIRST : n;
+  int first = n / 4 > ADAPTIVE_MIN_FIRST ? n / 4 : ADAPTIVE_MIN_FIRST;
+  if (!(threshold > 0.0f) || first >= n)
+    first = n;
   FilmAccum acc = {0};
   vec3s lo = glms_vec3_broadcast(1.0f), hi = glms_vec3_zero();
   trace_samples(scene, i, j, ctx, 0, first, &acc, &lo, &hi);
@@ -57,10 +61,12 @@ int main(int argc, char **argv)
 {
   const Step step = {
       .name = "08-area-lights",
-      .summary = "Step 08: area lights, soft shadows from stratified light samples.",
+      .summary = "Step 08: area lights, soft shadows from stratified light samples.\n"
+                 "Defaults: the scene's samples, --sampler sobol, --adaptive 0.05.",
       .features = SCENE_CAMERA | SCENE_LIGHTS | SCENE_AMBIENT | SCENE_LIGHT_SHAPES |
                   SCENE_SAMPLES | SCENE_AREA_LIGHTS,
       .sampler = "sobol",
+      .adaptive = 0.05f,
       .pixel = pixel,
   };
   return app_run(argc, argv, &step);
