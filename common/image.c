@@ -1,5 +1,6 @@
 /* Image files and comparison (step 01): tone maps, atomic writes (temporary
- * file, then rename), PFM by hand, PNG/JPG/HDR through stb. docs/01-film.md. */
+ * file, then rename), PFM by hand, PNG through zlib (common/png.c), JPG/HDR
+ * through stb. docs/01-film.md. */
 #include "image.h"
 
 #include <errno.h>
@@ -13,6 +14,8 @@
 
 #include <stb_image.h>
 #include <stb_image_write.h>
+
+#include "png.h"
 
 bool image_tonemap_parse(const char *name, Tonemap *out)
 {
@@ -43,8 +46,12 @@ unsigned char image_to_byte(float c, Tonemap tm)
     c = 1.0f;
   if (tm != TONEMAP_CLAMP)
     c = srgb_encode(c);
-  /* Round to nearest: the lecture truncates, which darkens by half a code. */
-  return (unsigned char)roundf(255.0f * c); /* halves round up, as round() */
+  /* Round to nearest: the lecture truncates, which darkens by half a code.
+   * Halves round up, as round() does; written out because roundf is a libm
+   * call per channel. k = trunc(x), and x - k is exact (Sterbenz). */
+  float x = 255.0f * c;
+  int k = (int)x;
+  return (unsigned char)(k + (x - (float)k >= 0.5f));
   /* STUB: return 0; */
   /* END SOLUTION */
 }
@@ -84,29 +91,34 @@ static unsigned char *to_bytes(int w, int h, const float *rgb, Tonemap tm)
 }
 
 /* PFM: header, then little-endian floats, bottom row first (the film's own
- * order). A negative scale says little-endian. */
-static void write_pfm(Out *out, int w, int h, const float *rgb)
+ * order). A negative scale says little-endian. One write of the whole body:
+ * a write per float cost more than rendering a small picture. */
+static bool write_pfm(Out *out, int w, int h, const float *rgb)
 {
   char head[64];
   int n = snprintf(head, sizeof head, "PF\n%d %d\n-1.0\n", w, h);
-  out_write(out, head, n);
-  for (size_t k = 0; k < (size_t)w * h * 3; k++) {
+  size_t count = (size_t)w * h * 3;
+  unsigned char *le = malloc(count * 4);
+  if (!le)
+    return false;
+  for (size_t k = 0; k < count; k++) {
     uint32_t bits;
     memcpy(&bits, &rgb[k], 4);
-    unsigned char le[4] = {bits & 0xff, (bits >> 8) & 0xff, (bits >> 16) & 0xff,
-                           bits >> 24};
-    out_write(out, le, 4);
+    for (int byte = 0; byte < 4; byte++)
+      le[4 * k + byte] = (unsigned char)(bits >> (8 * byte));
   }
+  out_write(out, head, n);
+  out_write(out, le, (int)(count * 4));
+  free(le);
+  return true;
 }
 
 /* Encode into `out`; false when the format is unknown or memory is short. */
 static bool encode(Out *out, const char *ext, int w, int h, const float *rgb,
                    Tonemap tm)
 {
-  if (strcmp(ext, "pfm") == 0) {
-    write_pfm(out, w, h, rgb);
-    return true;
-  }
+  if (strcmp(ext, "pfm") == 0)
+    return write_pfm(out, w, h, rgb);
   if (strcmp(ext, "hdr") == 0) {
     float *up = malloc((size_t)w * h * 3 * sizeof *up);
     if (!up)
@@ -121,9 +133,8 @@ static bool encode(Out *out, const char *ext, int w, int h, const float *rgb,
   unsigned char *px = to_bytes(w, h, rgb, tm);
   if (!px)
     return false;
-  int ok = strcmp(ext, "png") == 0
-               ? stbi_write_png_to_func(out_write, out, w, h, 3, px, w * 3)
-               : stbi_write_jpg_to_func(out_write, out, w, h, 3, px, 95);
+  int ok = strcmp(ext, "png") == 0 ? png_encode(out_write, out, w, h, px)
+                                    : stbi_write_jpg_to_func(out_write, out, w, h, 3, px, 95);
   free(px);
   return ok != 0;
 }
