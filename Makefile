@@ -218,8 +218,20 @@ check-diffs:
 	@tools/diffs.sh check $(PRESENT)
 
 # ---------------------------------------------------------------- benchmark
-bench: bench-deps $(BINS)
+bench: bench-deps $(BINS) bench-accuracy
 	@bench/run.sh
+
+# The cost of the robust geometry (docs/accuracy.md, "Cost"): step 05's frame
+# with common/'s geometry and with tests/textbook.h's, in one process. Linked
+# without LTO: each side keeps its own functions (docs/accuracy.md says why).
+$(BUILD)/obj/bench/robust-cost.o: CFLAGS += -Itests -Isteps/05-shadows
+$(BUILD)/bin/robust-cost: $(BUILD)/obj/bench/robust-cost.o \
+                          $(BUILD)/obj/steps/05-shadows/shade.o $(LIBCOMMON)
+	@mkdir -p $(@D)
+	@echo "LD $@"
+	@$(CC) $(CFLAGS) -fno-lto $(LDFLAGS) $^ $(LDLIBS) -o $@
+bench-accuracy: $(BUILD)/bin/robust-cost
+	@$(BUILD)/bin/robust-cost $${BENCH_COST_RUNS:-21} 1 | tee $(BUILD)/robust-cost.md
 
 clean:
 	rm -rf $(BUILD)
@@ -231,6 +243,7 @@ help:
 	@echo "make stress       run the numerical stress tests alone"
 	@echo "make sanitize     run the whole suite under AddressSanitizer + UBSan"
 	@echo "make bench        measure speed and error, write docs/benchmarks.md"
+	@echo "make bench-accuracy  time step 05's frame, robust vs textbook geometry (docs/accuracy.md)"
 	@echo "make images       regenerate the reference images in images/ (on purpose only)"
 	@echo "make diffs        write docs/diffs/NN-name.diff (each step against the previous)"
 	@echo "make mistakes     render the shadow/ambient mistake pictures into docs/img/ (on purpose only)"
@@ -241,6 +254,6 @@ starter:
 	@tools/starter.sh $(BUILD)/starter $(N)
 
 .PHONY: all build deps bench-deps test stress test-step sanitize images diffs \
-        check-diffs bench clean help starter mistakes
+        check-diffs bench bench-accuracy clean help starter mistakes
 
 -include $(shell find $(BUILD)/obj -name '*.d' 2>/dev/null)

@@ -1,6 +1,6 @@
 /* The textbook geometry the robust code replaces, kept for comparison only:
  * the stress tests measure it beside common/ (docs/accuracy.md) and
- * bench/robust_cost.c times it. Never used by a step. */
+ * bench/robust-cost.c times it. Never used by a step. */
 #ifndef RT_TEXTBOOK_H
 #define RT_TEXTBOOK_H
 
