@@ -1,5 +1,5 @@
-/* PNG encoder: every row with the Sub filter, then one zlib stream at level 1
- * in one IDAT chunk. docs/performance.md compares it with stb's encoder. */
+/* PNG encoder: every row with the Sub filter, streamed row by row into one
+ * zlib stream at level 1, in one IDAT chunk. docs/performance.md compares it with stb's encoder. */
 #include "png.h"
 
 #include <stdint.h>
@@ -12,16 +12,11 @@
  * its left (mod 256). On smooth renders this turns most bytes into small
  * values that compress well; trying all five filters per row, as stb does,
  * costs more than it saves at level 1. */
-static void filter_sub(unsigned char *out, int w, int h, const unsigned char *rgb)
+static void filter_sub(unsigned char *out, const unsigned char *in, size_t row)
 {
-  size_t row = (size_t)w * 3;
-  for (int j = 0; j < h; j++) {
-    const unsigned char *in = rgb + (size_t)j * row;
-    unsigned char *o = out + (size_t)j * (row + 1);
-    o[0] = 1;
-    for (size_t k = 0; k < row; k++)
-      o[1 + k] = (unsigned char)(in[k] - (k >= 3 ? in[k - 3] : 0));
-  }
+  out[0] = 1;
+  for (size_t k = 0; k < row; k++)
+    out[1 + k] = (unsigned char)(in[k] - (k >= 3 ? in[k - 3] : 0));
 }
 
 static void put32(unsigned char *p, uint32_t v)
@@ -49,24 +44,28 @@ static void chunk(PngWriteFn *write, void *ctx, const char *type,
   write(ctx, tail, 4);
 }
 
-/* Deflate `in` into a new buffer; its size in *out_len. NULL on failure. */
-static unsigned char *deflate_fast(const unsigned char *in, size_t len, size_t *out_len)
+/* Filter and deflate the rows one at a time (no filtered copy of the whole
+ * picture) into a new buffer; its size in *out_len. NULL on failure. */
+static unsigned char *deflate_rows(int w, int h, const unsigned char *rgb, size_t *out_len)
 {
-  uLong cap = compressBound((uLong)len);
-  unsigned char *out = malloc(cap);
+  size_t row = (size_t)w * 3;
+  uLong cap = compressBound((uLong)((row + 1) * (size_t)h));
+  unsigned char *out = malloc(cap), *line = malloc(row + 1);
   z_stream z = {0};
-  if (!out || deflateInit(&z, 1) != Z_OK) {
-    free(out);
-    return NULL;
-  }
-  z.next_in = (Bytef *)in;
-  z.avail_in = (uInt)len;
+  bool ok = out && line && deflateInit(&z, 1) == Z_OK;
   z.next_out = out;
   z.avail_out = (uInt)cap;
-  int rc = deflate(&z, Z_FINISH);
+  for (int j = 0; ok && j < h; j++) {
+    filter_sub(line, rgb + (size_t)j * row, row);
+    z.next_in = line;
+    z.avail_in = (uInt)(row + 1);
+    int rc = deflate(&z, j == h - 1 ? Z_FINISH : Z_NO_FLUSH);
+    ok = j == h - 1 ? rc == Z_STREAM_END : rc == Z_OK;
+  }
   *out_len = z.total_out;
   deflateEnd(&z);
-  if (rc != Z_STREAM_END) {
+  free(line);
+  if (!ok) {
     free(out);
     return NULL;
   }
@@ -76,15 +75,10 @@ static unsigned char *deflate_fast(const unsigned char *in, size_t len, size_t *
 bool png_encode(PngWriteFn *write, void *ctx, int w, int h, const unsigned char *rgb)
 {
   static const unsigned char signature[8] = {137, 80, 78, 71, 13, 10, 26, 10};
-  size_t len = ((size_t)w * 3 + 1) * (size_t)h, zlen = 0;
-  if (len > 0x7fffffffu) /* one IDAT chunk and zlib's uInt counts */
+  size_t zlen = 0;
+  if (((size_t)w * 3 + 1) * (size_t)h > 0x7fffffffu) /* one IDAT, zlib's uInt */
     return false;
-  unsigned char *filtered = malloc(len);
-  if (!filtered)
-    return false;
-  filter_sub(filtered, w, h, rgb);
-  unsigned char *z = deflate_fast(filtered, len, &zlen);
-  free(filtered);
+  unsigned char *z = w > 0 && h > 0 ? deflate_rows(w, h, rgb, &zlen) : NULL;
   if (!z)
     return false;
   /* IHDR: size, 8 bits per channel, colour type 2 (RGB), deflate, adaptive
