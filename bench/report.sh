@@ -154,9 +154,8 @@ $(table "$D/scaling.csv")
 
 ### Plain loop, SIMD blocks or BVH (RT_ACCEL=loop|flat|bvh)
 
-Render time (s, median) of step 05 by layout; the default is the BVH at
-every size (common/accel.h, ACCEL_FLAT_MAX = 0): even a single leaf's box
-rejects most rays before the SIMD kernel.
+Render time (s, median) of step 05 by layout; the default picks blocks up to
+16 spheres and the BVH above (common/accel.h, ACCEL_FLAT_MAX).
 
 $(table "$D/layout.csv")
 EOF

@@ -22,6 +22,8 @@ typedef struct SphereBlock {
   _Alignas(32) float cz[LANES];
   _Alignas(32) float rad[LANES];
   int inst[LANES];
+  vec3s bound_c;  /* flat layout: a sphere around the block's spheres, */
+  float bound_r2; /* centre and squared radius (block_near) */
 } SphereBlock;
 
 struct SceneAccel {
@@ -82,6 +84,20 @@ static bool block_hit_t(const SphereBlock *restrict blk, Ray r, float tmax,
     t[k] = disc[k] >= 0.0f ? hit : INFINITY;
   }
   return true;
+}
+
+/* False only when the ray's line passes clear of the block's bounding sphere,
+ * so that no lane of block_hit_t can find disc >= 0: a cheap test before the
+ * kernel in the flat layout (a BVH leaf has its box instead). It rejects when
+ * |l|^2 > R^2 (1 + 2^-8) + 2^-27 |f|^2, which implies |l| > R + 2^-18 |f|:
+ * that margin is 16 times the rounding error of either computation of |l|
+ * (a few ulps of |f|), so a rejected ray is clear of every sphere. */
+static bool block_near(const SphereBlock *blk, Ray r)
+{
+  vec3s f = glms_vec3_sub(r.o, blk->bound_c);
+  vec3s l = glms_vec3_sub(f, glms_vec3_scale(r.d, glms_vec3_dot(f, r.d)));
+  float limit = blk->bound_r2 * (1.0f + 0x1p-8f) + 0x1p-27f * glms_vec3_dot(f, f);
+  return !(glms_vec3_dot(l, l) > limit);
 }
 
 /* The closest hit so far: distance, instance index (INT_MAX: none). */
@@ -199,7 +215,8 @@ const Instance *accel_closest(const Scene *scene, Ray r, float *tmax)
     bvh_closest(acc, r, *tmax, &best);
   } else {
     for (int k = 0; k < acc->n_blocks; k++)
-      block_closest(&acc->blocks[k], r, *tmax, &best);
+      if (block_near(&acc->blocks[k], r))
+        block_closest(&acc->blocks[k], r, *tmax, &best);
   }
   for (int k = 0; k < acc->n_others; k++) {
     int idx = acc->others[k];
@@ -224,7 +241,7 @@ bool accel_any(const Scene *scene, Ray r, float tmax)
   if (acc->nodes)
     return bvh_any(acc, r, tmax);
   for (int k = 0; k < acc->n_blocks; k++)
-    if (block_any(&acc->blocks[k], r, tmax))
+    if (block_near(&acc->blocks[k], r) && block_any(&acc->blocks[k], r, tmax))
       return true;
   return false;
 }
@@ -253,6 +270,33 @@ static void fill_blocks(SphereBlock *blocks, const Scene *scene, const int *orde
     blk->cz[k % LANES] = s->center.z;
     blk->rad[k % LANES] = s->radius;
     blk->inst[k % LANES] = order[k];
+  }
+}
+
+/* Each block's bounding sphere: centred on the box of its spheres, radius
+ * the farthest sphere's |c_k - centre| + r_k, rounded up by 2^-20 relative. */
+static void bound_blocks(SphereBlock *blocks, int n_blocks)
+{
+  for (int k = 0; k < n_blocks; k++) {
+    SphereBlock *blk = &blocks[k];
+    float lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (int lane = 0; lane < LANES && blk->inst[lane] != INT_MAX; lane++) {
+      float c[3] = {blk->cx[lane], blk->cy[lane], blk->cz[lane]};
+      for (int a = 0; a < 3; a++) {
+        lo[a] = fminf(lo[a], c[a] - blk->rad[lane]);
+        hi[a] = fmaxf(hi[a], c[a] + blk->rad[lane]);
+      }
+    }
+    blk->bound_c = vec_make(0.5f * (lo[0] + hi[0]), 0.5f * (lo[1] + hi[1]), 0.5f * (lo[2] + hi[2]));
+    double radius = 0.0;
+    for (int lane = 0; lane < LANES && blk->inst[lane] != INT_MAX; lane++) {
+      double dx = (double)blk->cx[lane] - blk->bound_c.x, dy = (double)blk->cy[lane] - blk->bound_c.y,
+             dz = (double)blk->cz[lane] - blk->bound_c.z;
+      double reach = sqrt(dx * dx + dy * dy + dz * dz) + blk->rad[lane];
+      radius = reach > radius ? reach : radius;
+    }
+    radius *= 1.0 + 0x1p-20;
+    blk->bound_r2 = (float)(radius * radius * (1.0 + 0x1p-20));
   }
 }
 
@@ -354,8 +398,10 @@ bool accel_build(Scene *scene)
     acc->n_blocks = (n + LANES - 1) / LANES;
     acc->blocks = blocks_alloc(acc->n_blocks > 0 ? acc->n_blocks : 1);
     ok = acc->blocks != NULL;
-    if (ok)
+    if (ok) {
       fill_blocks(acc->blocks, scene, ids, n);
+      bound_blocks(acc->blocks, acc->n_blocks);
+    }
   }
   free(ids);
   scene->accel = acc;

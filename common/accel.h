@@ -1,7 +1,7 @@
 /* Acceleration structure for the scene queries: the lit spheres in blocks of
  * eight (structure of arrays, one SIMD kernel per block), under a bounding
- * volume hierarchy; planes and lights' shapes in a plain list.
- * docs/performance.md. */
+ * volume hierarchy when there are more than a few blocks; planes and lights'
+ * shapes in a plain list. docs/performance.md. */
 #ifndef RT_ACCEL_H
 #define RT_ACCEL_H
 
@@ -10,14 +10,11 @@
 /* Build scene->accel. The environment variable RT_ACCEL chooses the layout for
  * measurements: "loop" (none: scene.c's plain loop over instances), "flat"
  * (sphere blocks, no hierarchy), "bvh" (always a hierarchy); unset, the
- * hierarchy is built above ACCEL_FLAT_MAX spheres. Results are identical
+ * hierarchy is built from ACCEL_FLAT_MAX spheres on. Results are identical
  * whatever the layout. False (one line printed) when out of memory. */
 bool accel_build(Scene *scene);
 
-/* 0: always a hierarchy. Even a one-leaf tree pays on a handful of spheres:
- * its box rejects most rays before the block's kernel (about 9 % on step 05's
- * scene, docs/performance.md). */
-enum { ACCEL_FLAT_MAX = 0 };
+enum { ACCEL_FLAT_MAX = 16 };
 
 /* Free scene->accel; harmless when there is none. */
 void accel_free(Scene *scene);
