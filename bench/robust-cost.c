@@ -17,30 +17,6 @@
  * sphere.c's double-precision b and c (the rest as in common/). */
 typedef enum Geometry { TEXTBOOK, FLOAT_BC } Geometry;
 
-/* sphere_hit_t as it was before b and c moved to double (commit f3a4e67's
- * parent, plus the second Gram-Schmidt pass): every operation in float. */
-static float float_bc_sphere_t(const Sphere *s, Ray r, float tmax)
-{
-  vec3s f = glms_vec3_sub(r.o, s->center);
-  float b = -glms_vec3_dot(f, r.d);
-  vec3s to_line = glms_vec3_add(f, glms_vec3_scale(r.d, b));
-  to_line = glms_vec3_sub(to_line, glms_vec3_scale(r.d, glms_vec3_dot(to_line, r.d)));
-  float disc = s->radius * s->radius - glms_vec3_dot(to_line, to_line);
-  if (!(disc >= 0.0f))
-    return INFINITY;
-  float c = glms_vec3_dot(f, f) - s->radius * s->radius;
-  float q = b + copysignf(sqrtf(disc), b);
-  float t0 = c / q, t1 = q;
-  if (t0 > t1) {
-    float tmp = t0;
-    t0 = t1;
-    t1 = tmp;
-  }
-  if (t0 > 0.0f && t0 < tmax)
-    return t0;
-  return (t1 > 0.0f && t1 < tmax) ? t1 : INFINITY;
-}
-
 /* One shape's distance, out of line like the library's accel_instance_hit_t
  * (which then calls sphere_hit_t: one call more on the robust side). */
 __attribute__((noinline)) static float other_hit_t(const Instance *in, Ray r, float tmax,

@@ -133,12 +133,13 @@ Test(stress, t1_sphere_distance_within_4_ulp_for_central_rays)
 {
   stress_table("t1_sphere_ulps",
                "Test 1: ray-sphere distance error, central rays (worst ulps of t)",
-               "| distance/radius | rays | textbook b^2-c | robust (RTG ch. 7) |\n|---|---|---|---|");
+               "| distance/radius | rays | textbook b^2-c | robust, b and c in float | "
+               "robust (RTG ch. 7, b and c in double) |\n|---|---|---|---|---|");
   double worst = 0.0;
   enum { PER_BIN = 4000 };
   for (int bin = 0; bin < 7; bin++) {
     double lo = bin == 0 ? log10(1.1) : bin, hi = bin + 1;
-    double w_rob = 0.0, w_txt = 0.0;
+    double w_rob = 0.0, w_txt = 0.0, w_fbc = 0.0;
     for (int k = 0; k < PER_BIN; k++) {
       Rng g = rng_make(1, (uint32_t)bin, (uint32_t)k);
       double ratio = stress_log10u(&g, lo, hi);
@@ -151,11 +152,13 @@ Test(stress, t1_sphere_distance_within_4_ulp_for_central_rays)
       double ulp = stress_ulp(ref.t);
       double e_rob = fabs(sphere_hit_t(&s, ray, INFINITY) - ref.t) / ulp;
       double e_txt = fabs(textbook_sphere_t(&s, ray, INFINITY) - ref.t) / ulp;
+      double e_fbc = fabs(float_bc_sphere_t(&s, ray, INFINITY) - ref.t) / ulp;
       w_rob = fmax(w_rob, e_rob);
       w_txt = isfinite(e_txt) ? fmax(w_txt, e_txt) : INFINITY;
+      w_fbc = isfinite(e_fbc) ? fmax(w_fbc, e_fbc) : INFINITY;
     }
-    stress_row("t1_sphere_ulps", "| %.3g .. 1e%.0f | %d | %.3g | %.2f |", pow(10, lo), hi,
-               PER_BIN, w_txt, w_rob);
+    stress_row("t1_sphere_ulps", "| %.3g .. 1e%.0f | %d | %.3g | %.2f | %.2f |", pow(10, lo), hi,
+               PER_BIN, w_txt, w_fbc, w_rob);
     worst = fmax(worst, w_rob);
   }
   cr_log_info("test 1: worst robust error %.2f ulp", worst);

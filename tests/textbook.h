@@ -27,6 +27,31 @@ static inline float textbook_sphere_t(const Sphere *s, Ray r, float tmax)
   return (t > 0.0f && t < tmax) ? t : INFINITY;
 }
 
+/* The robust ray-sphere of common/sphere.c with b = -f.d and c = f.f - r^2
+ * formed in float from the rounded f (as it was before they moved to
+ * double): the stress tests and bench/robust-cost.c price that choice. */
+static inline float float_bc_sphere_t(const Sphere *s, Ray r, float tmax)
+{
+  vec3s f = glms_vec3_sub(r.o, s->center);
+  float b = -glms_vec3_dot(f, r.d);
+  vec3s to_line = glms_vec3_add(f, glms_vec3_scale(r.d, b));
+  to_line = glms_vec3_sub(to_line, glms_vec3_scale(r.d, glms_vec3_dot(to_line, r.d)));
+  float disc = s->radius * s->radius - glms_vec3_dot(to_line, to_line);
+  if (!(disc >= 0.0f))
+    return INFINITY;
+  float c = glms_vec3_dot(f, f) - s->radius * s->radius;
+  float q = b + copysignf(sqrtf(disc), b);
+  float t0 = c / q, t1 = q;
+  if (t0 > t1) {
+    float tmp = t0;
+    t0 = t1;
+    t1 = tmp;
+  }
+  if (t0 > 0.0f && t0 < tmax)
+    return t0;
+  return (t1 > 0.0f && t1 < tmax) ? t1 : INFINITY;
+}
+
 /* p = o + t d, n = (p - c) / r: no refinement, no error bound. */
 static inline void textbook_sphere_fill(const Sphere *s, Ray r, float t, Hit *hit)
 {
