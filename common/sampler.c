@@ -2,6 +2,7 @@
  * of (seed, pixel, k) alone. docs/07-antialiasing.md explains each pattern. */
 #include "sampler.h"
 
+#include <math.h>
 #include <string.h>
 
 #include "rng.h"
@@ -44,16 +45,22 @@ static Rng sample_rng(uint32_t seed, uint32_t pixel, uint32_t index)
  * so every cell has area 1/count and count = k^2 gives the k x k grid. */
 static vec2s cell_point(uint32_t cell, uint32_t count, float u, float v)
 {
-  uint64_t rows = 1;
+  /* rows = floor(sqrt(count)), at least 1. The double square root is already
+   * exact enough for any 32-bit count; the loops only guarantee it. */
+  uint64_t rows = (uint64_t)sqrt((double)count);
+  while (rows * rows > count)
+    rows--;
   while ((rows + 1) * (rows + 1) <= count)
     rows++;
+  rows = rows > 0 ? rows : 1;
   /* The largest q with start(q) <= cell: q count < (cell + 1) rows. */
   uint64_t q = ((cell + 1) * rows - 1) / count;
   uint64_t start = q * count / rows, next = (q + 1) * count / rows;
   uint64_t cols = next - start;
   float x = ((float)(cell - start) + u) / (float)cols;
   float y = ((float)start + v * (float)cols) / (float)count;
-  vec2s s = {.x = fminf(x, BELOW_ONE), .y = fminf(y, BELOW_ONE)};
+  /* fminf(x, BELOW_ONE) written out: the same value, without a libm call. */
+  vec2s s = {.x = x < BELOW_ONE ? x : BELOW_ONE, .y = y < BELOW_ONE ? y : BELOW_ONE};
   return s;
 }
 
