@@ -120,9 +120,10 @@ cat <<EOF
 ## Run time against error
 
 320x240, 2 threads. Each renderer against its own converged image: ours
-\`--samples 1024 --sampler sobol\` (step 07) and \`--samples 1 --light-samples
-2048\` with the same sampler (step 08; one camera sample so only the light
-sampling differs), POV-Ray \`+AM2 +R5 +A0.0\` (step 07) and a 33x33 area light
+\`--samples 1024 --sampler sobol --adaptive 0\` (step 07) and \`--samples 1
+--light-samples 2048 --adaptive 0\` with the same sampler (step 08; one camera
+sample so only the light sampling differs; adaptive sampling off, since its
+early stops bias a reference), POV-Ray \`+AM2 +R5 +A0.0\` (step 07) and a 33x33 area light
 without AA (step 08). RMSE over all channels of the values clamped to [0, 1]
 (bench/rmse.c; POV-Ray writes 16-bit linear PNG). Times: trace = render loop
 (ours) or "Trace Time" (POV-Ray), wall = whole process, median of
