@@ -5,8 +5,16 @@
 float sphere_hit_t(const Sphere *s, Ray r, float tmax)
 {
   /* BEGIN SOLUTION step 02 */
-  /* With d unit the quadratic is t^2 - 2 b t + c = 0, b = -f.d, f = o - c.
-   * The difference of two floats is exact in double, and so are products of
+  /* With d unit the quadratic is t^2 - 2 b t + c = 0, b = -f.d, f = o - c. */
+  vec3s f = glms_vec3_sub(r.o, s->center);
+  /* Quick reject, in float: the line passes farther than r from the centre
+   * by a margin (2^-17 |f|^2) far above the rounding of this test and of the
+   * exact one below, so it only skips rays the exact test rejects too (same
+   * answers, bit for bit; docs/accuracy.md, "Cost"). */
+  float fd = glms_vec3_dot(f, r.d), ff = glms_vec3_dot(f, f);
+  if (ff - fd * fd > s->radius * s->radius + 0x1p-17f * ff)
+    return INFINITY;
+  /* The difference of two floats is exact in double, and so are products of
    * floats: b and c are formed there from the exact f and rounded once. */
   double fx = (double)r.o.x - s->center.x, fy = (double)r.o.y - s->center.y,
          fz = (double)r.o.z - s->center.z;
@@ -15,8 +23,9 @@ float sphere_hit_t(const Sphere *s, Ray r, float tmax)
   /* The discriminant as r^2 - (distance from the centre to the line)^2: the
    * textbook b^2 - c cancels catastrophically for far or small spheres. The
    * perpendicular f + b d is taken twice (Gram-Schmidt): the second pass
-   * removes what rounding left along d, which would reach r past |f| = 1e6 r. */
-  vec3s f = vec_make((float)fx, (float)fy, (float)fz);
+   * removes what rounding left along d, which would reach r past |f| = 1e6 r.
+   * (f above equals the double f rounded once: float subtraction is
+   * correctly rounded.) */
   vec3s to_line = glms_vec3_add(f, glms_vec3_scale(r.d, b));
   to_line = glms_vec3_sub(to_line, glms_vec3_scale(r.d, glms_vec3_dot(to_line, r.d)));
   float disc = s->radius * s->radius - glms_vec3_dot(to_line, to_line);
