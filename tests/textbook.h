@@ -27,19 +27,23 @@ static inline float textbook_sphere_t(const Sphere *s, Ray r, float tmax)
   return (t > 0.0f && t < tmax) ? t : INFINITY;
 }
 
-/* The robust ray-sphere of common/sphere.c with b = -f.d and c = f.f - r^2
- * formed in float from the rounded f (as it was before they moved to
- * double): the stress tests and bench/robust-cost.c price that choice. */
+/* The robust ray-sphere of common/sphere.c (quick reject included) with
+ * b = -f.d and c = f.f - r^2 formed in float from the rounded f, as they were
+ * before they moved to double: the stress tests and bench/robust-cost.c
+ * price that choice. */
 static inline float float_bc_sphere_t(const Sphere *s, Ray r, float tmax)
 {
   vec3s f = glms_vec3_sub(r.o, s->center);
-  float b = -glms_vec3_dot(f, r.d);
+  float fd = glms_vec3_dot(f, r.d), ff = glms_vec3_dot(f, f);
+  if (ff - fd * fd > s->radius * s->radius + 0x1p-17f * ff)
+    return INFINITY;
+  float b = -fd;
   vec3s to_line = glms_vec3_add(f, glms_vec3_scale(r.d, b));
   to_line = glms_vec3_sub(to_line, glms_vec3_scale(r.d, glms_vec3_dot(to_line, r.d)));
   float disc = s->radius * s->radius - glms_vec3_dot(to_line, to_line);
   if (!(disc >= 0.0f))
     return INFINITY;
-  float c = glms_vec3_dot(f, f) - s->radius * s->radius;
+  float c = ff - s->radius * s->radius;
   float q = b + copysignf(sqrtf(disc), b);
   float t0 = c / q, t1 = q;
   if (t0 > t1) {
