@@ -1,6 +1,7 @@
 /* The render loop: every pixel of the film through a step's pixel function,
- * in parallel over tiles (OpenMP), deterministic whatever the thread count,
- * with a progress bar on a terminal. Introduced in step 01; docs/01-film.md. */
+ * in parallel over tiles (POSIX threads), deterministic whatever the thread
+ * count, with a progress bar on a terminal. Introduced in step 01;
+ * docs/01-film.md. */
 #ifndef RT_RENDER_H
 #define RT_RENDER_H
 
@@ -12,7 +13,7 @@
 enum { RENDER_MAX_THREADS = 256 };
 
 typedef struct RenderSettings {
-  int threads;        /* 0: as many as OpenMP offers; at most RENDER_MAX_THREADS */
+  int threads;        /* 0: one per online core; at most RENDER_MAX_THREADS */
   uint32_t seed;      /* keys every random number (with pixel and sample) */
   int samples;        /* camera samples per pixel */
   int light_samples;  /* samples per area light */
