@@ -76,17 +76,29 @@ static const char *extension(const char *path)
   return (dot && (!slash || dot > slash)) ? dot + 1 : "";
 }
 
-/* Bytes of the picture, upright (top row first), tone mapped. */
+/* The picture to convert to bytes: linear floats, bottom row first. */
+typedef struct Bytes {
+  int w, h;
+  const float *rgb;
+  Tonemap tm;
+} Bytes;
+
+/* Row j of the upright picture (top row first), tone mapped to bytes. */
+static void bytes_row(void *ctx, int j, unsigned char *out)
+{
+  const Bytes *b = ctx;
+  const float *row = b->rgb + (size_t)(b->h - 1 - j) * b->w * 3;
+  for (int k = 0; k < b->w * 3; k++)
+    out[k] = image_to_byte(row[k], b->tm);
+}
+
+/* All the bytes of the picture, upright. */
 static unsigned char *to_bytes(int w, int h, const float *rgb, Tonemap tm)
 {
   unsigned char *px = malloc((size_t)w * h * 3);
-  if (!px)
-    return NULL;
-  for (int j = 0; j < h; j++) {
-    const float *row = rgb + (size_t)(h - 1 - j) * w * 3;
-    for (int k = 0; k < w * 3; k++)
-      px[(size_t)j * w * 3 + k] = image_to_byte(row[k], tm);
-  }
+  Bytes b = {w, h, rgb, tm};
+  for (int j = 0; px && j < h; j++)
+    bytes_row(&b, j, px + (size_t)j * w * 3);
   return px;
 }
 
@@ -130,11 +142,12 @@ static bool encode(Out *out, const char *ext, int w, int h, const float *rgb,
     free(up);
     return ok != 0;
   }
+  if (strcmp(ext, "png") == 0) /* png.c asks for the rows as it goes */
+    return png_encode(out_write, out, w, h, bytes_row, &(Bytes){w, h, rgb, tm});
   unsigned char *px = to_bytes(w, h, rgb, tm);
   if (!px)
     return false;
-  int ok = strcmp(ext, "png") == 0 ? png_encode(out_write, out, w, h, px)
-                                    : stbi_write_jpg_to_func(out_write, out, w, h, 3, px, 95);
+  int ok = stbi_write_jpg_to_func(out_write, out, w, h, 3, px, 95);
   free(px);
   return ok != 0;
 }
