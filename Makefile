@@ -42,13 +42,13 @@ CC      := gcc
 # byte-identical; docs/performance.md). Fat objects: tools/ and bench/ link
 # build/libcommon.a with plain gcc, without -flto.
 OPT     ?= -O3 -march=native -flto=auto -ffat-lto-objects
-CFLAGS  := -std=c11 $(OPT) -g -pthread -ffp-contract=off -fno-math-errno \
+CFLAGS  := -std=c11 $(OPT) -g -fopenmp -ffp-contract=off -fno-math-errno \
            -D_POSIX_C_SOURCE=200809L \
            -Wall -Wextra -Wpedantic -Wshadow -Wstrict-prototypes \
            -Wmissing-prototypes -Werror -MMD -MP -Icommon
 # pkg-config runs when a recipe needs it, after the dependency check below.
-PKG_CFLAGS = $(shell pkg-config --cflags cglm stb)
-LDLIBS  := -pthread -lz -lstb -lm
+PKG_CFLAGS = $(shell pkg-config --cflags cglm stb libpng)
+LDLIBS  := -fopenmp -lpng -lstb -lm
 # Link flags only: with -flto, gcc 12 re-runs its warnings at link time and
 # reports false -Wmaybe-uninitialized / -Wuninitialized on `Hit hit;` in the
 # steps (scene_intersect fills it whenever it returns true; gcc follows a path
@@ -64,7 +64,7 @@ endif
 # ---------------------------------------------------------------- dependencies
 # Debian packages the build, the tests and the benchmark need. Run as root, the
 # Makefile installs what is missing; otherwise it prints the command to run.
-DEB_BUILD := gcc make pkg-config libc6-dev libstb-dev libcglm-dev zlib1g-dev \
+DEB_BUILD := gcc make pkg-config libc6-dev libstb-dev libcglm-dev libpng-dev \
              libcriterion-dev libmpfr-dev
 DEB_BENCH := gnuplot-nox povray hyperfine
 

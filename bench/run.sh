@@ -10,7 +10,7 @@ RUNS=${BENCH_RUNS:-5}; ERUNS=${BENCH_ERR_RUNS:-3}
 mkdir -p "$B" "$D"
 CFL="-std=c11 -O2 -Icommon $(pkg-config --cflags cglm stb)"
 gcc $CFL bench/gen_spheres.c -lm -o "$B/gen_spheres" || exit 1
-gcc $CFL bench/rmse.c build/libcommon.a -lz -lstb -lm -o "$B/rmse" || exit 1
+gcc $CFL bench/rmse.c build/libcommon.a -lpng -lstb -lm -o "$B/rmse" || exit 1
 POV=$(command -v povray || true)
 have() { [ -x "$BIN/$1" ]; }
 log() { echo "bench: $*" >&2; }

@@ -11,7 +11,7 @@ make --no-print-directory build/bin/07-antialiasing >/dev/null
 gcc -std=c11 -O3 -march=native -fopenmp -ffp-contract=off -D_POSIX_C_SOURCE=200809L -Wall -Wextra \
   -Werror -Icommon -Isteps/07-antialiasing $(pkg-config --cflags cglm stb) \
   tools/aa-mistakes.c steps/07-antialiasing/shade.c build/obj/gen/07-antialiasing-scene.o \
-  build/libcommon.a -lz -lstb -lm -o $bin/aa-mistakes
+  build/libcommon.a -lpng -lstb -lm -o $bin/aa-mistakes
 mkdir -p docs/img
 for s in grid random jitter sobol; do
   $bin/aa-mistakes points $s 16 docs/img/07-points-$s.png
