@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "bvh.h"
+#include "hull.h"
 
 enum { LANES = 8, STACK = 64 };
 
@@ -243,6 +244,60 @@ bool accel_any(const Scene *scene, Ray r, float tmax)
   for (int k = 0; k < acc->n_blocks; k++)
     if (block_near(&acc->blocks[k], r) && block_any(&acc->blocks[k], r, tmax))
       return true;
+  return false;
+}
+
+/* Shadow volume query (common/hull.c): same traversal as bvh_any, boxes and
+ * spheres tested against the hull instead of a ray. */
+static bool block_may_occlude(const SphereBlock *blk, const ShadowHull *h)
+{
+  for (int k = 0; k < LANES && blk->inst[k] != INT_MAX; k++)
+    if (hull_may_meet_sphere(h, vec_make(blk->cx[k], blk->cy[k], blk->cz[k]), blk->rad[k]))
+      return true;
+  return false;
+}
+
+static bool bvh_may_occlude(const struct SceneAccel *acc, const ShadowHull *h)
+{
+  int stack[STACK], top = 0, node = 0;
+  for (;;) {
+    const BvhNode *nd = &acc->nodes[node];
+    if (hull_may_meet_box(h, nd->lo, nd->hi)) {
+      if (nd->meta > 0) {
+        if (block_may_occlude(&acc->blocks[nd->index], h))
+          return true;
+      } else {
+        stack[top++] = nd->index + 1;
+        node = nd->index;
+        continue;
+      }
+    }
+    if (top == 0)
+      return false;
+    node = stack[--top];
+  }
+}
+
+bool accel_may_occlude(const Scene *scene, const ShadowHull *h)
+{
+  const struct SceneAccel *acc = scene->accel;
+  for (int k = 0; k < acc->n_others_lit; k++) {
+    const Instance *inst = &scene->instances[acc->others[k]];
+    if (inst->shape != SHAPE_PLANE || hull_may_meet_plane(h, &inst->plane))
+      return true;
+  }
+  if (acc->nodes)
+    return bvh_may_occlude(acc, h);
+  for (int k = 0; k < acc->n_blocks; k++) {
+    const SphereBlock *blk = &acc->blocks[k];
+    float rad = sqrtf(blk->bound_r2) * (1.0f + 0x1p-20f), lo[3], hi[3];
+    for (int a = 0; a < 3; a++) { /* the box of the block's bounding sphere */
+      lo[a] = blk->bound_c.raw[a] - rad;
+      hi[a] = blk->bound_c.raw[a] + rad;
+    }
+    if (hull_may_meet_box(h, lo, hi) && block_may_occlude(blk, h))
+      return true;
+  }
   return false;
 }
 

@@ -7,6 +7,8 @@
 
 #include "scene.h"
 
+struct ShadowHull;
+
 /* Build scene->accel. The environment variable RT_ACCEL chooses the layout for
  * measurements: "loop" (none: scene.c's plain loop over instances), "flat"
  * (sphere blocks, no hierarchy), "bvh" (always a hierarchy); unset, the
@@ -26,6 +28,11 @@ const Instance *accel_closest(const Scene *scene, Ray r, float *tmax);
 
 /* True when some lit shape lies on the ray with t in (0, tmax). */
 bool accel_any(const Scene *scene, Ray r, float tmax);
+
+/* False only when no lit shape can stop a shadow ray inside the hull
+ * (common/hull.h): the blocks' spheres, through the hierarchy's boxes, and the
+ * lit planes; any other lit shape counts as a possible occluder. */
+bool accel_may_occlude(const Scene *scene, const struct ShadowHull *h);
 
 /* Distance to one instance along the ray, INFINITY when missed (its shape's
  * hit_t function). */

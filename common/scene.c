@@ -3,6 +3,7 @@
 #include "scene.h"
 
 #include "accel.h"
+#include "hull.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -186,6 +187,23 @@ bool scene_intersect(const Scene *scene, Ray r, float tmax, Hit *hit)
   if (!best)
     return false;
   instance_hit_fill(best, r, tmax, hit);
+  return true;
+}
+
+bool scene_quad_unoccluded(const Scene *scene, const Hit *hit, const Quad *q)
+{
+  ShadowHull h = hull_make(hit, q);
+  if (scene->accel)
+    return !accel_may_occlude(scene, &h);
+  for (int k = 0; k < scene->n_shapes; k++) {
+    const Instance *inst = &scene->instances[k];
+    bool may = inst->shape == SHAPE_SPHERE  ? hull_may_meet_sphere(&h, inst->sphere.center,
+                                                                    inst->sphere.radius)
+               : inst->shape == SHAPE_PLANE ? hull_may_meet_plane(&h, &inst->plane)
+                                            : true;
+    if (may)
+      return false;
+  }
   return true;
 }
 

@@ -94,6 +94,13 @@ bool scene_intersect(const Scene *scene, Ray r, float tmax, Hit *hit);
  * on the ray with t in (0, tmax). Stops at the first one found. */
 bool scene_occluded(const Scene *scene, Ray r, float tmax);
 
+/* True when no lit shape can stop a shadow ray ray_spawn(hit, l) toward any
+ * point of the parallelogram q on the front side of hit->n: scene_occluded
+ * would then answer false for every one of them (a conservative test of the
+ * shapes against the hull of hit->p and q, common/hull.c; it answers false
+ * when unsure). */
+bool scene_quad_unoccluded(const Scene *scene, const Hit *hit, const Quad *q);
+
 /* The index of the material called `name`, or -1. */
 int scene_find_material(const Scene *scene, const char *name);
 

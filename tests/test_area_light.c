@@ -8,6 +8,7 @@
 #include <math.h>
 
 #include "parser.h"
+#include "rng.h"
 #include "sampler.h"
 #include "shade.h"
 
@@ -228,10 +229,64 @@ Test(area_light, adaptive_equals_full_estimate_when_nothing_is_in_the_way)
     double full = estimate(&s, &h, 9, 16, kind, 0.0f, &r_full);
     double adapt = estimate(&s, &h, 9, 16, kind, 0.5f, &r_adapt);
     cr_expect(adapt == full, "%s: adaptive %.9g, full %.9g", sampler_name(kind), adapt, full);
-    cr_expect(r_full == 16 && r_adapt == 4, "%s: rays full %llu adaptive %llu",
+    /* No lit shape meets the hull of p and the light: no shadow ray at all,
+     * adaptive or not (the shadow volume test, common/hull.c). */
+    cr_expect(r_full == 0 && r_adapt == 0, "%s: rays full %llu adaptive %llu",
               sampler_name(kind), (unsigned long long)r_full, (unsigned long long)r_adapt);
   }
   scene_free(&s);
+}
+
+/* A random ray from the spawned origin of h to a point of the light. */
+static bool random_ray_occluded(const Scene *s, const Hit *h, const Quad *q, Rng *r)
+{
+  vec3s x = quad_point(q, rng_float(r), rng_float(r));
+  vec3s to_x = glms_vec3_sub(x, h->p);
+  float dist = glms_vec3_norm(to_x);
+  vec3s l = glms_vec3_scale(to_x, 1.0f / dist);
+  if (!(glms_vec3_dot(h->n, l) > 0.0f))
+    return false;
+  return scene_occluded(s, ray_spawn(h, l), dist * (1.0f - 0x1p-20f));
+}
+
+Test(area_light, shadow_volume_test_never_skips_a_ray_that_is_blocked)
+{
+  /* Random spheres over the floor; shading points on the floor and on the
+   * spheres. Whenever scene_quad_unoccluded says no shadow ray is needed, 64
+   * random shadow rays (scene_occluded, the ray code itself) must all pass.
+   * It must also say so often enough to matter, and sometimes not. */
+  Rng r = rng_make(7, 0, 0);
+  int skipped = 0, kept = 0;
+  for (int scene_k = 0; scene_k < 20; scene_k++) {
+    char text[1024];
+    int len = snprintf(text, sizeof text,
+                       "light area corner -1 3 -0.5 edge1 2 0 0 edge2 0 0.4 1 power 6 6 6\n");
+    for (int k = 0; k < 4; k++)
+      len += snprintf(text + len, sizeof text - (size_t)len,
+                      "sphere center %g %g %g radius %g material white\n",
+                      6.0f * rng_float(&r) - 3.0f, 2.5f * rng_float(&r),
+                      6.0f * rng_float(&r) - 3.0f, 0.1f + 0.6f * rng_float(&r));
+    Scene s;
+    load(&s, text);
+    const Quad *q = &s.lights[0].quad;
+    for (int k = 0; k < 200; k++) {
+      Hit h;
+      Ray cam = {.o = vec_make(6.0f * rng_float(&r) - 3.0f, 5.0f, 6.0f * rng_float(&r) - 3.0f),
+                 .d = glms_vec3_normalize(vec_make(rng_float(&r) - 0.5f, -1.0f,
+                                                   rng_float(&r) - 0.5f))};
+      if (!scene_intersect(&s, cam, INFINITY, &h) || h.inst->light >= 0)
+        continue;
+      if (!scene_quad_unoccluded(&s, &h, q)) {
+        kept++;
+        continue;
+      }
+      skipped++;
+      for (int j = 0; j < 64; j++)
+        cr_assert(!random_ray_occluded(&s, &h, q, &r), "a skipped shadow ray is blocked");
+    }
+    scene_free(&s);
+  }
+  cr_expect(skipped > 100 && kept > 100, "skipped %d, traced %d", skipped, kept);
 }
 
 Test(area_light, adaptive_equals_full_estimate_when_everything_is_hidden)
