@@ -53,10 +53,16 @@ static vec2s cell_point(uint32_t cell, uint32_t count, float u, float v)
   while ((rows + 1) * (rows + 1) <= count)
     rows++;
   rows = rows > 0 ? rows : 1;
-  /* The largest q with start(q) <= cell: q count < (cell + 1) rows. */
-  uint64_t q = ((cell + 1) * rows - 1) / count;
-  uint64_t start = q * count / rows, next = (q + 1) * count / rows;
-  uint64_t cols = next - start;
+  uint64_t q, start, cols;
+  if (rows * rows == count) { /* the k x k grid: the same q, start and cols */
+    q = (uint32_t)cell / (uint32_t)rows;
+    start = q * rows;
+    cols = rows;
+  } else { /* the largest q with start(q) <= cell: q count < (cell + 1) rows */
+    q = ((cell + 1) * rows - 1) / count;
+    start = q * count / rows;
+    cols = (q + 1) * count / rows - start;
+  }
   float x = ((float)(cell - start) + u) / (float)cols;
   float y = ((float)start + v * (float)cols) / (float)count;
   /* fminf(x, BELOW_ONE) written out: the same value, without a libm call. */
