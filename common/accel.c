@@ -35,11 +35,31 @@ struct SceneAccel {
   int n_others, n_others_lit;
 };
 
+/* plane_hit_t for a plane whose normal is +-e_a: its dot products are
+ * (q[a] - o[a]) n[a] and d[a] n[a] plus exact zeros, and n[a] = +-1 cancels in
+ * the quotient, so t = (q[a] - o[a]) / d[a] is the same float (a zero
+ * denominator's sign may differ: t is then infinite or NaN, rejected both
+ * ways). Finite coordinates assumed, as everywhere. */
+static float axis_plane_hit_t(const Plane *pl, Ray r, float tmax)
+{
+  int a = pl->axis;
+  float num = pl->point.raw[a] - r.o.raw[a], den = r.d.raw[a];
+  /* The quotient's sign is the product of the signs: opposite signs (a ray
+   * going away from the plane, about half of all rays) or a zero numerator
+   * give t <= 0 or NaN, rejected without the division. */
+  if (signbit(num) != signbit(den) || num == 0.0f)
+    return INFINITY;
+  float t = num / den;
+  return (t > 0.0f && t < tmax) ? t : INFINITY;
+}
+
 float accel_instance_hit_t(const Instance *inst, Ray r, float tmax)
 {
   switch (inst->shape) {
   case SHAPE_SPHERE: return sphere_hit_t(&inst->sphere, r, tmax);
-  case SHAPE_PLANE: return plane_hit_t(&inst->plane, r, tmax);
+  case SHAPE_PLANE:
+    return inst->plane.axis >= 0 ? axis_plane_hit_t(&inst->plane, r, tmax)
+                                 : plane_hit_t(&inst->plane, r, tmax);
   case SHAPE_QUAD: return quad_hit_t(&inst->quad, r, tmax);
   }
   return INFINITY;

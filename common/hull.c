@@ -32,18 +32,23 @@ static vec3s corner_f(const ShadowHull *h, int j)
  * vertices p, o and the corners (a linear function peaks at a vertex). */
 static float hull_reach(const ShadowHull *h, vec3s u)
 {
-  float best = fmaxf(0.0f, glms_vec3_dot(u, glms_vec3_sub(h->o, h->p)));
-  for (int j = 0; j < 4; j++)
-    best = fmaxf(best, glms_vec3_dot(u, glms_vec3_sub(corner_f(h, j), h->p)));
+  float best = glms_vec3_dot(u, glms_vec3_sub(h->o, h->p));
+  best = best > 0.0f ? best : 0.0f;
+  for (int j = 0; j < 4; j++) {
+    float s = glms_vec3_dot(u, glms_vec3_sub(corner_f(h, j), h->p));
+    best = s > best ? s : best;
+  }
   return best;
 }
 
-static void add_dir(ShadowHull *h, vec3s u)
+/* Add unit u / |u|, turned to point away from `inside` - p. */
+static void add_dir(ShadowHull *h, vec3s u, vec3s inside)
 {
   float len = glms_vec3_norm(u);
   if (!(len > 0x1p-40f)) /* degenerate side (p in the light's plane): skipped */
     return;
-  u = glms_vec3_scale(u, 1.0f / len);
+  u = glms_vec3_scale(u, glms_vec3_dot(u, glms_vec3_sub(inside, h->p)) > 0.0f ? -1.0f / len
+                                                                           : 1.0f / len);
   h->dir[h->n_dirs] = u;
   h->reach[h->n_dirs++] = hull_reach(h, u);
 }
@@ -69,17 +74,14 @@ ShadowHull hull_make(const Hit *hit, const Quad *q)
   h.margin = 0x1p-14f * (scale + far) + 2.0f * vec_sum_abs(glms_vec3_sub(h.o, h.p));
   h.lean = 0x1p-18 * ((double)far + q->area + vec_max_abs(q->corner) +
                       vec_max_abs(q->edge1) + vec_max_abs(q->edge2) + scale);
-  for (int j = 0; j < 4; j++) /* the four sides through p and an edge */
-    add_dir(&h, glms_vec3_cross(glms_vec3_sub(corner_f(&h, j), h.p),
-                                glms_vec3_sub(corner_f(&h, (j + 1) % 4), h.p)));
+  /* The four sides through p and an edge, outward (away from the light's
+   * centre), then the light's plane and the plane through p parallel to it. */
   vec3s mid = glms_vec3_scale(glms_vec3_add(corner_f(&h, 0), corner_f(&h, 2)), 0.5f);
-  for (int k = 0; k < h.n_dirs; k++) /* orient them outward: away from mid */
-    if (glms_vec3_dot(h.dir[k], glms_vec3_sub(mid, h.p)) > 0.0f) {
-      h.dir[k] = glms_vec3_negate(h.dir[k]);
-      h.reach[k] = hull_reach(&h, h.dir[k]);
-    }
-  add_dir(&h, q->normal); /* the light's plane and the plane through p */
-  add_dir(&h, glms_vec3_negate(q->normal));
+  for (int j = 0; j < 4; j++)
+    add_dir(&h, glms_vec3_cross(glms_vec3_sub(corner_f(&h, j), h.p),
+                                glms_vec3_sub(corner_f(&h, (j + 1) % 4), h.p)), mid);
+  add_dir(&h, q->normal, h.p);
+  add_dir(&h, glms_vec3_negate(q->normal), glms_vec3_add(h.p, q->normal));
   return h;
 }
 

@@ -130,12 +130,13 @@ vec3s shade_area(const Scene *scene, int light_index, const Hit *hit, vec3s eye,
   vec3s v = glms_vec3_normalize(glms_vec3_sub(eye, hit->p));
   int n = ctx->set->light_samples > 0 ? ctx->set->light_samples : 1;
   LightPattern pat = pattern_make(ctx, light_index, n);
-  /* When no shape can meet the shadow volume (the hull of p and the light),
-   * every sample is visible: no shadow ray at all. Else adaptive probing, which
-   * only pays with more samples than the four corner rays. */
-  int agreed = scene_quad_unoccluded(scene, hit, &light->quad)  ? 1
-               : ctx->set->adaptive > 0.0f && n > 4 ? probe_corners(scene, light, hit, ctx)
-                                                    : -1;
+  /* Adaptive: the four corner rays decide. Otherwise, when no shape can meet
+   * the shadow volume (the hull of p and the light), every sample is visible
+   * and needs no shadow ray. Either pays only with more than four samples. */
+  int agreed = n <= 4                        ? -1
+               : ctx->set->adaptive > 0.0f   ? probe_corners(scene, light, hit, ctx)
+               : scene_quad_unoccluded(scene, hit, &light->quad) ? 1
+                                                                 : -1;
   if (agreed == 0)
     return c;
   for (int k = 0; k < n; k++) {
