@@ -70,6 +70,28 @@ static vec2s cell_point(uint32_t cell, uint32_t count, float u, float v)
   return s;
 }
 
+/* The grid's points are the same for every pixel: each thread keeps tables
+ * of the values cell_point gives for the last two counts (camera and light
+ * samples), each computed once. */
+enum { GRID_CACHE_MAX = 4096 };
+
+static vec2s grid_point(uint32_t cell, uint32_t count)
+{
+  static _Thread_local uint32_t cached[2], older;
+  static _Thread_local vec2s table[2][GRID_CACHE_MAX];
+  if (count > GRID_CACHE_MAX || cell >= count)
+    return cell_point(cell, count, 0.5f, 0.5f);
+  int slot = cached[0] == count ? 0 : cached[1] == count ? 1 : -1;
+  if (slot < 0) {
+    slot = (int)older;
+    older ^= 1u;
+    for (uint32_t k = 0; k < count; k++)
+      table[slot][k] = cell_point(k, count, 0.5f, 0.5f);
+    cached[slot] = count;
+  }
+  return table[slot][cell];
+}
+
 static uint32_t reverse_bits(uint32_t x)
 {
   x = (x << 16) | (x >> 16);
@@ -121,7 +143,7 @@ vec2s sampler_get(SamplerKind kind, uint32_t seed, uint32_t pixel, uint32_t inde
   Rng r = sample_rng(seed, pixel, index);
   switch (kind) {
   case SAMPLER_GRID:
-    return cell_point(index - first, count, 0.5f, 0.5f);
+    return grid_point(index - first, count);
   case SAMPLER_RANDOM:
     s.x = rng_float(&r);
     s.y = rng_float(&r);
