@@ -17,7 +17,9 @@ vec3s shade_incident(const Scene *scene, const Light *light, const Hit *hit,
  * the light) that counts only when nothing lies between. The samples follow
  * ctx->set->sampler's pattern, keyed by seed, light, pixel and camera sample;
  * with ctx->set->adaptive > 0 shadow rays to the light's four corners come
- * first, and the samples skip theirs when the four agree. Shadow rays are counted in ctx->rays. */
+ * first, and the samples skip theirs when the four agree; without it, a point
+ * no lit shape can shadow (scene_quad_unoccluded) skips them all. Shadow rays
+ * are counted in ctx->rays. */
 vec3s shade_area(const Scene *scene, int light_index, const Hit *hit, vec3s eye,
                  RenderCtx *ctx);
 
