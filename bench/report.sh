@@ -127,7 +127,7 @@ early stops bias a reference), POV-Ray \`+AM2 +R5 +A0.0\` (step 07) and a 33x33 
 without AA (step 08). RMSE over all channels of the values clamped to [0, 1]
 (bench/rmse.c; POV-Ray writes 16-bit linear PNG). Times: trace = render loop
 (ours) or "Trace Time" (POV-Ray), wall = whole process, median of
-${BENCH_ERR_RUNS:-3} runs. No closed form is used here: the area light's closed
+${BENCH_ERR_RUNS:-5} runs. No closed form is used here: the area light's closed
 form (a point's irradiance from a parallelogram) is tested in
 tests/test_area_light.c, but a whole picture has none.
 

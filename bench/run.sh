@@ -2,11 +2,11 @@
 # `make bench`: throughput, run time against error, scaling, and POV-Ray side
 # by side, in one run. Writes docs/benchmarks.md, its plots docs/bench/*.png
 # and the CSV they are drawn from (docs/bench/*.csv). It reports; it never
-# fails on a figure. BENCH_RUNS (default 5) sets the repetitions of timings.
+# fails on a figure. BENCH_RUNS (default 9) sets the repetitions of timings.
 set -uo pipefail
 cd "$(dirname "$0")/.."
 B=build/bench; D=docs/bench; BIN=build/bin
-RUNS=${BENCH_RUNS:-5}; ERUNS=${BENCH_ERR_RUNS:-3}
+RUNS=${BENCH_RUNS:-9}; ERUNS=${BENCH_ERR_RUNS:-5}
 mkdir -p "$B" "$D"
 CFL="-std=c11 -O2 -Icommon $(pkg-config --cflags cglm stb)"
 gcc $CFL bench/gen_spheres.c -lm -o "$B/gen_spheres" || exit 1
@@ -91,7 +91,7 @@ if have 07-antialiasing; then
   "$BIN/07-antialiasing" --width 320 --height 240 --threads 2 --quiet --sampler sobol \
     --samples 1024 --adaptive 0 -o "$B/ref07.pfm"
   for smp in grid random jitter sobol; do
-    for n in 1 4 16 32 64 256; do
+    for n in 1 4 16 32 48 64 256; do
       [ "$n" = 256 ] && [ "$smp" != sobol ] && continue
       [ "$n" = 32 ] && [ "$smp" != sobol ] && continue
       for a in 0 0.02 0.05; do
@@ -120,8 +120,8 @@ if have 08-area-lights; then
     # Reference without adaptive light sampling (on by default): unbiased.
     "$BIN/08-area-lights" --width 320 --height 240 --threads 2 --quiet --sampler "$smp" \
       --samples 1 --light-samples 2048 --adaptive 0 -o "$B/ref08-$smp.pfm"
-    for n in 1 4 16 64 100 144 256; do
-      { [ "$n" = 100 ] || [ "$n" = 144 ]; } && [ "$smp" != grid ] && continue
+    for n in 1 4 16 64 100 121 144 256; do
+      { [ "$n" = 100 ] || [ "$n" = 121 ] || [ "$n" = 144 ]; } && [ "$smp" != grid ] && continue
       for a in 0 0.02; do
         [ "$a" != 0 ] && [ "$n" -le 4 ] && continue
         err_ours "$D/error-08.csv" 08-area-lights "$B/ref08-$smp.pfm" \
