@@ -94,7 +94,7 @@ bench-deps:
 	@$(call need_debs,$(DEB_BENCH))
 
 # ---------------------------------------------------------------- common library
-COMMON_SRC := $(wildcard common/*.c)
+COMMON_SRC := $(wildcard common/*.c common/*/*.c)
 COMMON_OBJ := $(COMMON_SRC:%.c=$(BUILD)/obj/%.o)
 LIBCOMMON  := $(BUILD)/libcommon.a
 

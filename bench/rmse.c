@@ -9,7 +9,7 @@
 #include <string.h>
 #include <stb_image.h>
 
-#include "image.h"
+#include "app/image.h"
 
 static bool load(const char *path, int *w, int *h, float **rgb)
 {

@@ -6,9 +6,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "accel.h"
-#include "parser.h"
-#include "render.h"
+#include "accel/accel.h"
+#include "app/image.h"
+#include "app/parser.h"
+#include "app/render.h"
 #include "shade.h"
 #include "textbook.h"
 
@@ -29,7 +30,7 @@ __attribute__((noinline)) static float other_hit_t(const Instance *in, Ray r, fl
   case SHAPE_PLANE:
     return g == TEXTBOOK ? textbook_plane_t(&in->plane, r, tmax)
                          : plane_hit_t(&in->plane, r, tmax);
-  default: return accel_instance_hit_t(in, r, tmax);
+  default: return scene_instance_hit_t(in, r, tmax);
   }
 }
 
@@ -146,7 +147,8 @@ static bool load(const char *path, Scene *sc, const char *layout)
     setenv("RT_ACCEL", layout, 1);
   else
     unsetenv("RT_ACCEL");
-  bool ok = parser_load_file(path, sc) && scene_prepare(sc, SCENE_CAMERA | SCENE_LIGHTS);
+  bool ok = parser_load_file(path, sc) && scene_prepare(sc, SCENE_CAMERA | SCENE_LIGHTS) &&
+            accel_build(sc);
   unsetenv("RT_ACCEL");
   return ok;
 }
@@ -179,7 +181,7 @@ int main(int argc, char **argv)
       else if (prefix) {
         char out[512];
         snprintf(out, sizeof out, "%s-%d.pfm", prefix, v);
-        film_save(&film, out, TONEMAP_SRGB);
+        image_save(out, film.width, film.height, film.rgb, TONEMAP_SRGB);
       }
     }
   }

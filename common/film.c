@@ -3,6 +3,7 @@
 #define _DEFAULT_SOURCE /* madvise */
 #include "film.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -73,10 +74,33 @@ vec3s film_get(const Film *film, int i, int j)
   return vec_make(px[0], px[1], px[2]);
 }
 
-bool film_save(const Film *film, const char *path, Tonemap tm)
+/* The sRGB transfer curve (IEC 61966-2-1) for linear c in [0, 1]. */
+static float srgb_encode(float c)
 {
-  return image_save(path, film->width, film->height, film->rgb, tm);
+  return c <= 0.0031308f ? 12.92f * c : 1.055f * powf(c, 1.0f / 2.4f) - 0.055f;
 }
+
+unsigned char film_to_byte(float c, Tonemap tm)
+{
+  /* BEGIN SOLUTION step 01 */
+  if (!(c > 0.0f)) /* also maps NaN to 0 */
+    return 0;
+  if (tm == TONEMAP_REINHARD) /* infinity would give inf/inf = NaN: its limit is 1 */
+    c = isinf(c) ? 1.0f : c / (1.0f + c);
+  if (c > 1.0f)
+    c = 1.0f;
+  if (tm != TONEMAP_CLAMP)
+    c = srgb_encode(c);
+  /* Round to nearest: the lecture truncates, which darkens by half a code.
+   * Halves round up, as round() does; written out because roundf is a libm
+   * call per channel. k = trunc(x), and x - k is exact (Sterbenz). */
+  float x = 255.0f * c;
+  int k = (int)x;
+  return (unsigned char)(k + (x - (float)k >= 0.5f));
+  /* STUB: return 0; */
+  /* END SOLUTION */
+}
+
 
 /* A float-float sum per channel: TwoSum (Knuth) gives the exact rounding
  * error of each addition, it is added to `comp`, and (sum, comp) is then

@@ -5,8 +5,13 @@
 #define RT_FILM_H
 
 #include <stdbool.h>
-#include "image.h"
 #include "vec.h"
+
+typedef enum Tonemap {
+  TONEMAP_CLAMP,    /* byte = round(255 clamp(c, 0, 1)), the lecture's mapping */
+  TONEMAP_SRGB,     /* clamp, then the sRGB transfer curve */
+  TONEMAP_REINHARD, /* c / (1 + c), then sRGB */
+} Tonemap;
 
 typedef struct Film {
   int width, height;
@@ -29,8 +34,10 @@ vec2s film_sample(const Film *film, int i, int j);
 void film_set(Film *film, int i, int j, vec3s c);
 vec3s film_get(const Film *film, int i, int j);
 
-/* Save through image_save (format from the extension, atomic). */
-bool film_save(const Film *film, const char *path, Tonemap tm);
+/* Export: the byte a linear value c maps to under `tm` (NaN and c <= 0 give
+ * 0; TONEMAP_CLAMP gives round(255 clamp(c, 0, 1)), halves rounded up). The
+ * image files (common/app/image.c) are written through it. */
+unsigned char film_to_byte(float c, Tonemap tm);
 
 /* Compensated (float-float, TwoSum) sum of colour samples: the mean of
  * millions of samples keeps float precision (docs/accuracy.md). */

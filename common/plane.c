@@ -38,7 +38,7 @@ void plane_hit_fill(const Plane *pl, Ray r, float t, Hit *hit)
   } else {
     float off = glms_vec3_dot(glms_vec3_sub(p, pl->point), pl->normal);
     p = glms_vec3_sub(p, glms_vec3_scale(pl->normal, off));
-    hit->p_err = 0x1p-22f * (vec_max_abs(p) + vec_max_abs(pl->point));
+    hit->p_err = RAY_POINT_ERR * (vec_max_abs(p) + vec_max_abs(pl->point));
   }
   hit->t = t;
   hit->p = p;

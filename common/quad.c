@@ -33,7 +33,7 @@ void quad_hit_fill(const Quad *q, Ray r, float t, Hit *hit)
   hit->p = glms_vec3_sub(p, glms_vec3_scale(q->normal, off));
   hit->backface = glms_vec3_dot(r.d, q->normal) > 0.0f;
   hit->n = hit->backface ? glms_vec3_negate(q->normal) : q->normal;
-  hit->p_err = 0x1p-22f * (vec_max_abs(hit->p) + vec_max_abs(q->corner));
+  hit->p_err = RAY_POINT_ERR * (vec_max_abs(hit->p) + vec_max_abs(q->corner));
 }
 
 vec3s quad_point(const Quad *q, float a, float b)

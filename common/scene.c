@@ -2,9 +2,6 @@
  * docs/02-intersection.md, docs/05-shadows.md. */
 #include "scene.h"
 
-#include "accel.h"
-#include "hull.h"
-
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -25,7 +22,8 @@ void scene_free(Scene *scene)
   free(scene->materials);
   free(scene->lights);
   free(scene->instances);
-  accel_free(scene);
+  if (scene->index)
+    scene->index->destroy(scene->index);
   scene_init(scene);
 }
 
@@ -138,6 +136,10 @@ bool scene_prepare(Scene *scene, unsigned features)
 {
   memset(&scene->info, 0, sizeof scene->info);
   scene->n_instances = scene->n_shapes; /* in case of a second call */
+  if (scene->index) { /* built over the instances of a first call */
+    scene->index->destroy(scene->index);
+    scene->index = NULL;
+  }
   if (!(features & SCENE_AMBIENT) && !vec_is_zero(scene->ambient)) {
     scene->info.ignored |= SCENE_AMBIENT;
     scene->ambient = glms_vec3_zero();
@@ -157,7 +159,17 @@ bool scene_prepare(Scene *scene, unsigned features)
   Camera *cam = &scene->camera;
   camera_init(cam, cam->eye, cam->center, cam->up, cam->fov_y_deg, cam->focal,
               (float)scene->width / (float)scene->height);
-  return accel_build(scene);
+  return true;
+}
+
+float scene_instance_hit_t(const Instance *inst, Ray r, float tmax)
+{
+  switch (inst->shape) {
+  case SHAPE_SPHERE: return sphere_hit_t(&inst->sphere, r, tmax);
+  case SHAPE_PLANE: return plane_hit_t(&inst->plane, r, tmax);
+  case SHAPE_QUAD: return quad_hit_t(&inst->quad, r, tmax);
+  }
+  return INFINITY;
 }
 
 static void instance_hit_fill(const Instance *inst, Ray r, float t, Hit *hit)
@@ -173,11 +185,11 @@ static void instance_hit_fill(const Instance *inst, Ray r, float t, Hit *hit)
 bool scene_intersect(const Scene *scene, Ray r, float tmax, Hit *hit)
 {
   const Instance *best = NULL;
-  if (scene->accel) {
-    best = accel_closest(scene, r, &tmax);
+  if (scene->index) {
+    best = scene->index->closest(scene, r, &tmax);
   } else {
     for (int k = 0; k < scene->n_instances; k++) {
-      float t = accel_instance_hit_t(&scene->instances[k], r, tmax);
+      float t = scene_instance_hit_t(&scene->instances[k], r, tmax);
       if (t < tmax) {
         tmax = t;
         best = &scene->instances[k];
@@ -190,32 +202,21 @@ bool scene_intersect(const Scene *scene, Ray r, float tmax, Hit *hit)
   return true;
 }
 
-/* Not inlined: once per shading point, and inlined (LTO) into a step's
- * sample loop it made that loop's code 10 % slower even where never called. */
-__attribute__((noinline)) bool scene_quad_unoccluded(const Scene *scene, const Hit *hit,
-                                                     const Quad *q)
-{
-  ShadowHull h = hull_make(hit, q);
-  if (scene->accel)
-    return !accel_may_occlude(scene, &h);
-  for (int k = 0; k < scene->n_shapes; k++) {
-    const Instance *inst = &scene->instances[k];
-    bool may = inst->shape == SHAPE_SPHERE  ? hull_may_meet_sphere(&h, inst->sphere.center,
-                                                                    inst->sphere.radius)
-               : inst->shape == SHAPE_PLANE ? hull_may_meet_plane(&h, &inst->plane)
-                                            : true;
-    if (may)
-      return false;
-  }
-  return true;
-}
-
 bool scene_occluded(const Scene *scene, Ray r, float tmax)
 {
-  if (scene->accel)
-    return accel_any(scene, r, tmax);
+  if (scene->no_occluders)
+    return false;
+  if (scene->index)
+    return scene->index->any(scene, r, tmax);
   for (int k = 0; k < scene->n_shapes; k++)
-    if (accel_instance_hit_t(&scene->instances[k], r, tmax) < tmax)
+    if (scene_instance_hit_t(&scene->instances[k], r, tmax) < tmax)
       return true;
   return false;
+}
+
+Scene scene_view_unoccluded(const Scene *scene)
+{
+  Scene view = *scene;
+  view.no_occluders = true;
+  return view;
 }

@@ -45,7 +45,21 @@ typedef struct SceneInfo {
   unsigned ignored;    /* SceneFeature bits present in the scene but not rendered */
 } SceneInfo;
 
-struct SceneAccel;
+struct Scene;
+
+/* An acceleration structure over the instances (common/accel/ builds one).
+ * It only chooses which instances a query tests; every test calls the
+ * shape's own function (scene_instance_hit_t), so its answers are the plain
+ * loop's: the closest hit keeps the first of equal distances in instance
+ * order, as the loop does. */
+typedef struct SceneIndex {
+  /* Closest instance with t in (0, *tmax), *tmax becoming its distance; NULL
+   * when none. */
+  const struct Instance *(*closest)(const struct Scene *scene, Ray r, float *tmax);
+  /* True when some lit shape lies on the ray with t in (0, tmax). */
+  bool (*any)(const struct Scene *scene, Ray r, float tmax);
+  void (*destroy)(struct SceneIndex *index); /* frees the index */
+} SceneIndex;
 
 typedef struct Scene {
   int width, height;       /* film size in pixels (default 800 x 600) */
@@ -62,7 +76,11 @@ typedef struct Scene {
   int n_instances;         /* all instances the camera sees */
   int n_shapes;            /* instances [0, n_shapes) have a material */
   SceneInfo info;          /* set by scene_prepare */
-  struct SceneAccel *accel; /* acceleration structure, owned; NULL when none */
+  SceneIndex *index;       /* acceleration structure, owned; NULL: the queries
+                            * test every instance in order */
+  bool no_occluders;       /* scene_occluded answers false: a view of the
+                            * scene (scene_view_unoccluded) for points that
+                            * nothing can shadow */
 } Scene;
 
 /* Scene limits the parser enforces (no memory blow-up from one line). */
@@ -81,10 +99,14 @@ bool scene_add_instance(Scene *scene, const Instance *inst);
 
 /* Get the scene ready for a step that handles `features` (SceneFeature bits):
  * drop what it cannot render (recorded in info.ignored), order the instances,
- * fill info, derive the camera for the film's aspect and build the
- * acceleration structure when the scene is large enough to need one.
+ * fill info and derive the camera for the film's aspect. The acceleration
+ * structure is built afterwards, by whoever wants one (accel_build).
  * False when out of memory (the scene is then only fit for scene_free). */
 bool scene_prepare(Scene *scene, unsigned features);
+
+/* Distance to one instance along the ray with t in (0, tmax), INFINITY when
+ * missed: the student's sphere_hit_t, plane_hit_t or quad_hit_t. */
+float scene_instance_hit_t(const Instance *inst, Ray r, float tmax);
 
 /* Closest hit with t in (0, tmax) among all instances (lit shapes and lights'
  * shapes). False when the ray hits nothing. */
@@ -94,12 +116,10 @@ bool scene_intersect(const Scene *scene, Ray r, float tmax, Hit *hit);
  * on the ray with t in (0, tmax). Stops at the first one found. */
 bool scene_occluded(const Scene *scene, Ray r, float tmax);
 
-/* True when no lit shape can stop a shadow ray ray_spawn(hit, l) toward any
- * point of the parallelogram q on the front side of hit->n: scene_occluded
- * would then answer false for every one of them (a conservative test of the
- * shapes against the hull of hit->p and q, common/hull.c; it answers false
- * when unsure). */
-bool scene_quad_unoccluded(const Scene *scene, const Hit *hit, const Quad *q);
+/* A copy of `scene` whose any-hit queries answer false (no_occluders set):
+ * what a shading point sees when the renderer has proved that nothing lies
+ * between it and a light (common/accel/shadow_volume.h). */
+Scene scene_view_unoccluded(const Scene *scene);
 
 /* The index of the material called `name`, or -1. */
 int scene_find_material(const Scene *scene, const char *name);

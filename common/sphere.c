@@ -69,6 +69,6 @@ void sphere_hit_fill(const Sphere *s, Ray r, float t, Hit *hit)
   hit->p = glms_vec3_add(s->center, rel);
   hit->backface = glms_vec3_dot(n_out, r.d) > 0.0f;
   hit->n = hit->backface ? glms_vec3_negate(n_out) : n_out;
-  hit->p_err = 0x1p-22f * (vec_max_abs(s->center) + s->radius);
+  hit->p_err = RAY_POINT_ERR * (vec_max_abs(s->center) + s->radius);
   /* END SOLUTION */
 }

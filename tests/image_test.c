@@ -22,7 +22,7 @@
 #include <sys/stat.h>
 #include <sys/wait.h>
 
-#include "image.h"
+#include "app/image.h"
 
 typedef struct Tolerance {
   double tol, fraction, max; /* tol and max in 1/255 units */

@@ -2,11 +2,11 @@
  * the queries: closest hit = the first instance, in order, at the smallest
  * sphere_hit_t / plane_hit_t distance; any-hit = some lit shape at t < tmax.
  * The reference is that loop written out here, over random scenes and rays
- * (grazing ones included), for the flat blocks and the hierarchy. */
+ * (grazing ones included), for the flat layout and the hierarchy. */
 #include <criterion/criterion.h>
 #include <stdlib.h>
 
-#include "accel.h"
+#include "accel/accel.h"
 #include "rng.h"
 
 static float uni(Rng *g, float lo, float hi) { return lo + (hi - lo) * rng_float(g); }
@@ -29,6 +29,7 @@ static void random_scene(Scene *s, Rng *g, int n)
     cr_assert(scene_add_instance(s, &in));
   }
   cr_assert(scene_prepare(s, SCENE_CAMERA | SCENE_LIGHTS));
+  cr_assert(accel_build(s));
 }
 
 static Ray random_ray(const Scene *s, Rng *g)
@@ -51,29 +52,29 @@ static void check_layout(const char *layout, int n)
   Rng g = rng_make(7, (uint32_t)n, 0);
   Scene s;
   random_scene(&s, &g, n);
-  cr_assert_not_null(s.accel);
+  cr_assert_not_null(s.index);
   for (int k = 0; k < 20000; k++) {
     Ray r = random_ray(&s, &g);
     float tmax = k % 3 ? INFINITY : uni(&g, 0.1f, 20);
     float best = tmax, got = tmax;
     int want = -1;
     for (int m = 0; m < s.n_instances; m++) {
-      float t = accel_instance_hit_t(&s.instances[m], r, best);
+      float t = scene_instance_hit_t(&s.instances[m], r, best);
       if (t < best) {
         best = t;
         want = m;
       }
     }
-    const Instance *hit = accel_closest(&s, r, &got);
+    const Instance *hit = s.index->closest(&s, r, &got);
     cr_assert_eq(hit ? (int)(hit - s.instances) : -1, want, "%s, n = %d, ray %d", layout, n, k);
     cr_assert(want < 0 || got == best, "%s: t %a, expected %a", layout, got, best);
-    cr_assert_eq(accel_any(&s, r, tmax), want >= 0, "%s, n = %d, ray %d", layout, n, k);
+    cr_assert_eq(s.index->any(&s, r, tmax), want >= 0, "%s, n = %d, ray %d", layout, n, k);
   }
   scene_free(&s);
   unsetenv("RT_ACCEL");
 }
 
-Test(accel, flat_blocks_give_the_plain_loops_answers)
+Test(accel, flat_layout_gives_the_plain_loops_answers)
 {
   for (int n = 1; n <= 40; n += 13)
     check_layout("flat", n);

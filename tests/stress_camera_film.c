@@ -5,7 +5,7 @@
 
 #include "camera.h"
 #include "film.h"
-#include "image.h"
+#include "app/image.h"
 #include "stress.h"
 
 static long double ldot(vec3s a, vec3s b)
@@ -153,7 +153,7 @@ Test(stress, t8_rng_never_returns_one_and_srgb_round_trips_all_codes)
     /* The exact sRGB decoding of code b, in long double. */
     long double v = b / 255.0L;
     long double lin = v <= 0.04045L ? v / 12.92L : powl((v + 0.055L) / 1.055L, 2.4L);
-    int back = image_to_byte((float)lin, TONEMAP_SRGB);
+    int back = film_to_byte((float)lin, TONEMAP_SRGB);
     bad += back != b;
     cr_expect(back == b, "sRGB code %d came back as %d", b, back);
   }

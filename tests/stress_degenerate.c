@@ -4,8 +4,8 @@
 #include <criterion/criterion.h>
 #include <stdlib.h>
 
-#include "image.h"
-#include "parser.h"
+#include "app/image.h"
+#include "app/parser.h"
 #include "stress.h"
 
 #define STEP05 BUILD_DIR "/bin/05-shadows"

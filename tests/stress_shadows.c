@@ -5,8 +5,8 @@
 #include <criterion/criterion.h>
 #include <stdlib.h>
 
-#include "image.h"
-#include "parser.h"
+#include "app/image.h"
+#include "app/parser.h"
 #include "stress.h"
 
 #define W 160

@@ -5,7 +5,7 @@
 
 #include <math.h>
 
-#include "parser.h"
+#include "app/parser.h"
 #include "shade.h"
 
 static const unsigned STEP06 = SCENE_CAMERA | SCENE_LIGHTS | SCENE_AMBIENT | SCENE_LIGHT_SHAPES;

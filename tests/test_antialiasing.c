@@ -11,7 +11,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
-#include "image.h"
+#include "app/image.h"
 
 #define OUT_DIR BUILD_DIR "/test-out"
 

@@ -16,7 +16,7 @@
 
 #include <stb_image.h>
 
-#include "image.h"
+#include "app/image.h"
 
 #define OUT_DIR BUILD_DIR "/test-out"
 
@@ -162,33 +162,33 @@ Test(image, byte_rounds_to_nearest_at_every_code)
    * gives k, 0.02/255 above gives k+1. */
   for (int k = 0; k < 255; k++) {
     float below = (float)((k + 0.48L) / 255.0L), above = (float)((k + 0.52L) / 255.0L);
-    cr_expect(image_to_byte(below, TONEMAP_CLAMP) == k, "(%d + 0.48)/255 -> %d", k,
-              image_to_byte(below, TONEMAP_CLAMP));
-    cr_expect(image_to_byte(above, TONEMAP_CLAMP) == k + 1, "(%d + 0.52)/255 -> %d", k,
-              image_to_byte(above, TONEMAP_CLAMP));
+    cr_expect(film_to_byte(below, TONEMAP_CLAMP) == k, "(%d + 0.48)/255 -> %d", k,
+              film_to_byte(below, TONEMAP_CLAMP));
+    cr_expect(film_to_byte(above, TONEMAP_CLAMP) == k + 1, "(%d + 0.52)/255 -> %d", k,
+              film_to_byte(above, TONEMAP_CLAMP));
     float exact = (float)k / 255.0f;
-    cr_expect(image_to_byte(exact, TONEMAP_CLAMP) == k, "%d/255 -> %d", k,
-              image_to_byte(exact, TONEMAP_CLAMP));
+    cr_expect(film_to_byte(exact, TONEMAP_CLAMP) == k, "%d/255 -> %d", k,
+              film_to_byte(exact, TONEMAP_CLAMP));
   }
 }
 
 Test(image, byte_clamps_and_maps_nan_to_zero)
 {
-  cr_expect(image_to_byte(1.0f, TONEMAP_CLAMP) == 255);
-  cr_expect(image_to_byte(0.999f, TONEMAP_CLAMP) == 255); /* 254.745 */
-  cr_expect(image_to_byte(0.997f, TONEMAP_CLAMP) == 254); /* 254.235 */
-  cr_expect(image_to_byte(1.5f, TONEMAP_CLAMP) == 255);
-  cr_expect(image_to_byte(1e30f, TONEMAP_CLAMP) == 255);
-  cr_expect(image_to_byte(INFINITY, TONEMAP_CLAMP) == 255);
-  cr_expect(image_to_byte(0.0f, TONEMAP_CLAMP) == 0);
-  cr_expect(image_to_byte(-0.0f, TONEMAP_CLAMP) == 0);
-  cr_expect(image_to_byte(-0.5f, TONEMAP_CLAMP) == 0);
-  cr_expect(image_to_byte(-INFINITY, TONEMAP_CLAMP) == 0);
-  cr_expect(image_to_byte(NAN, TONEMAP_CLAMP) == 0);
-  cr_expect(image_to_byte(NAN, TONEMAP_SRGB) == 0);
-  cr_expect(image_to_byte(NAN, TONEMAP_REINHARD) == 0);
-  cr_expect(image_to_byte(-1.0f, TONEMAP_SRGB) == 0);
-  cr_expect(image_to_byte(-1.0f, TONEMAP_REINHARD) == 0);
+  cr_expect(film_to_byte(1.0f, TONEMAP_CLAMP) == 255);
+  cr_expect(film_to_byte(0.999f, TONEMAP_CLAMP) == 255); /* 254.745 */
+  cr_expect(film_to_byte(0.997f, TONEMAP_CLAMP) == 254); /* 254.235 */
+  cr_expect(film_to_byte(1.5f, TONEMAP_CLAMP) == 255);
+  cr_expect(film_to_byte(1e30f, TONEMAP_CLAMP) == 255);
+  cr_expect(film_to_byte(INFINITY, TONEMAP_CLAMP) == 255);
+  cr_expect(film_to_byte(0.0f, TONEMAP_CLAMP) == 0);
+  cr_expect(film_to_byte(-0.0f, TONEMAP_CLAMP) == 0);
+  cr_expect(film_to_byte(-0.5f, TONEMAP_CLAMP) == 0);
+  cr_expect(film_to_byte(-INFINITY, TONEMAP_CLAMP) == 0);
+  cr_expect(film_to_byte(NAN, TONEMAP_CLAMP) == 0);
+  cr_expect(film_to_byte(NAN, TONEMAP_SRGB) == 0);
+  cr_expect(film_to_byte(NAN, TONEMAP_REINHARD) == 0);
+  cr_expect(film_to_byte(-1.0f, TONEMAP_SRGB) == 0);
+  cr_expect(film_to_byte(-1.0f, TONEMAP_REINHARD) == 0);
 }
 
 Test(image, srgb_spot_values_by_hand)
@@ -199,12 +199,12 @@ Test(image, srgb_spot_values_by_hand)
    *            (1.055 * 0.489468 - 0.055) * 255         = 117.65 -> 118
    *   0.5   -> 0.5^(1/2.4) = 0.749154, (0.790357 - 0.055) * 255 = 187.52 -> 188
    *   1.0 -> 255, 2.0 clamps to 1.0 -> 255. */
-  cr_expect_eq(image_to_byte(0.002f, TONEMAP_SRGB), 7);
-  cr_expect_eq(image_to_byte(0.18f, TONEMAP_SRGB), 118);
-  cr_expect_eq(image_to_byte(0.5f, TONEMAP_SRGB), 188);
-  cr_expect_eq(image_to_byte(1.0f, TONEMAP_SRGB), 255);
-  cr_expect_eq(image_to_byte(2.0f, TONEMAP_SRGB), 255);
-  cr_expect_eq(image_to_byte(0.0f, TONEMAP_SRGB), 0);
+  cr_expect_eq(film_to_byte(0.002f, TONEMAP_SRGB), 7);
+  cr_expect_eq(film_to_byte(0.18f, TONEMAP_SRGB), 118);
+  cr_expect_eq(film_to_byte(0.5f, TONEMAP_SRGB), 188);
+  cr_expect_eq(film_to_byte(1.0f, TONEMAP_SRGB), 255);
+  cr_expect_eq(film_to_byte(2.0f, TONEMAP_SRGB), 255);
+  cr_expect_eq(film_to_byte(0.0f, TONEMAP_SRGB), 0);
 }
 
 Test(image, reinhard_spot_values_by_hand)
@@ -216,11 +216,11 @@ Test(image, reinhard_spot_values_by_hand)
    *   0.25 -> 0.2 -> 0.2^(1/2.4) = e^(-1.609438/2.4) = 0.511402,
    *                  (0.539529 - 0.055) * 255 = 123.55 -> 124
    *   huge and infinite values tend to 1 -> 255. */
-  cr_expect_eq(image_to_byte(1.0f, TONEMAP_REINHARD), 188);
-  cr_expect_eq(image_to_byte(3.0f, TONEMAP_REINHARD), 225);
-  cr_expect_eq(image_to_byte(0.25f, TONEMAP_REINHARD), 124);
-  cr_expect_eq(image_to_byte(1e30f, TONEMAP_REINHARD), 255);
-  cr_expect_eq(image_to_byte(INFINITY, TONEMAP_REINHARD), 255);
+  cr_expect_eq(film_to_byte(1.0f, TONEMAP_REINHARD), 188);
+  cr_expect_eq(film_to_byte(3.0f, TONEMAP_REINHARD), 225);
+  cr_expect_eq(film_to_byte(0.25f, TONEMAP_REINHARD), 124);
+  cr_expect_eq(film_to_byte(1e30f, TONEMAP_REINHARD), 255);
+  cr_expect_eq(film_to_byte(INFINITY, TONEMAP_REINHARD), 255);
 }
 
 Test(image, tonemap_names_parse)

@@ -9,7 +9,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "parser.h"
+#include "app/parser.h"
 
 static bool near3(vec3s v, float x, float y, float z)
 {

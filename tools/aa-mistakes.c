@@ -6,7 +6,8 @@
  *     dots on a 192 x 192 square with the N cells of grid and jitter;
  *   aa-mistakes zoom IN.pfm X Y W H OUT.png: the W x H pixels from column X,
  *     row Y (from the top) of IN, each shown as a 4 x 4 block. */
-#include "app.h"
+#include "app/app.h"
+#include "app/image.h"
 #include "sampler.h"
 #include "shade.h"
 

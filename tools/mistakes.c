@@ -4,7 +4,7 @@
  * steps/06-ambient/shade.c, only the visibility test changes.
  * Usage: build/bin/mistakes VARIANT [the steps' options], VARIANT one of
  * lecture, closest, no-offset, epsilon=E, no-tmax, light-shadows. */
-#include "app.h"
+#include "app/app.h"
 
 #include <stdio.h>
 #include <stdlib.h>

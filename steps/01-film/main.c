@@ -1,7 +1,7 @@
 /* Step 01, the film: a test picture of four coloured quadrants, red at the
  * bottom left, green top left, blue bottom right, white top right. It checks
  * the film's row order (j from the bottom) and the export. docs/01-film.md. */
-#include "app.h"
+#include "app/app.h"
 
 static vec3s pixel(const Scene *scene, const Film *film, int i, int j, RenderCtx *ctx)
 {

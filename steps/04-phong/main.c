@@ -1,6 +1,6 @@
 /* Step 04, Phong: the scene lit by point and directional lights with the
  * Phong model, no shadows yet. docs/04-phong.md. */
-#include "app.h"
+#include "app/app.h"
 #include "shade.h"
 
 static vec3s pixel(const Scene *scene, const Film *film, int i, int j, RenderCtx *ctx)

@@ -11,28 +11,40 @@ vec3s shade_incident(const Scene *scene, const Light *light, const Hit *hit,
   return light_incident(light, hit->p, hit->p_err, l, &dist);
 }
 
+vec3s shade_phong_light(const Material *m, const Hit *hit, vec3s v, vec3s li, vec3s l)
+{
+  vec3s c = glms_vec3_zero();
+  /* BEGIN SOLUTION step 04 */
+  float n_dot_l = glms_vec3_dot(hit->n, l);
+  if (!(n_dot_l > 0.0f)) /* light behind the surface: no diffuse, no specular */
+    return c;
+  c = glms_vec3_scale(glms_vec3_mul(m->diffuse, li), n_dot_l);
+  if (!vec_is_zero(m->specular)) { /* no lobe to compute without a specular colour */
+    /* The lecture's slide omits L_i here; without it the highlight would not
+     * dim with distance or light power (docs/04-phong.md). */
+    vec3s r = vec_reflect(glms_vec3_negate(l), hit->n);
+    float lobe = powf(fmaxf(0.0f, glms_vec3_dot(r, v)), m->shininess);
+    c = glms_vec3_add(c, glms_vec3_scale(glms_vec3_mul(m->specular, li), lobe));
+  }
+  /* END SOLUTION */
+  return c;
+}
+
+/* One light's term at the hit point seen from the direction v. */
+static vec3s shade_light(const Scene *scene, int k, const Hit *hit, vec3s v, RenderCtx *ctx)
+{
+  vec3s l;
+  vec3s li = shade_incident(scene, &scene->lights[k], hit, &l, ctx);
+  return shade_phong_light(&scene->materials[hit->inst->material], hit, v, li, l);
+}
+
 vec3s shade_phong(const Scene *scene, const Hit *hit, vec3s eye, RenderCtx *ctx)
 {
-  const Material *m = &scene->materials[hit->inst->material];
   vec3s c = glms_vec3_zero();
   /* BEGIN SOLUTION step 04 */
   vec3s v = glms_vec3_normalize(glms_vec3_sub(eye, hit->p));
-  bool specular = !vec_is_zero(m->specular);
-  for (int k = 0; k < scene->n_lights; k++) {
-    vec3s l;
-    vec3s li = shade_incident(scene, &scene->lights[k], hit, &l, ctx);
-    float n_dot_l = glms_vec3_dot(hit->n, l);
-    if (!(n_dot_l > 0.0f)) /* light behind the surface: no diffuse, no specular */
-      continue;
-    c = glms_vec3_add(c, glms_vec3_scale(glms_vec3_mul(m->diffuse, li), n_dot_l));
-    if (specular) {
-      /* The lecture's slide omits L_i here; without it the highlight would not
-       * dim with distance or light power (docs/04-phong.md). */
-      vec3s r = vec_reflect(glms_vec3_negate(l), hit->n);
-      float lobe = powf(fmaxf(0.0f, glms_vec3_dot(r, v)), m->shininess);
-      c = glms_vec3_add(c, glms_vec3_scale(glms_vec3_mul(m->specular, li), lobe));
-    }
-  }
+  for (int k = 0; k < scene->n_lights; k++)
+    c = glms_vec3_add(c, shade_light(scene, k, hit, v, ctx));
   /* END SOLUTION */
   return c;
 }

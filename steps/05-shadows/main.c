@@ -1,6 +1,6 @@
 /* Step 05, shadows: Phong shading where a light counts only when nothing
  * lies between the point and the light. docs/05-shadows.md. */
-#include "app.h"
+#include "app/app.h"
 #include "shade.h"
 
 static vec3s pixel(const Scene *scene, const Film *film, int i, int j, RenderCtx *ctx)

@@ -1,16 +1,27 @@
-/* Shading of step 05: the lecture's Scene.TraceRay, PhongMaterial.Eval and
- * Light.Radiance with its shadow test. docs/05-shadows.md. */
+/* Shading of step 05: step 04's Phong shading, with a shadow ray toward each
+ * light. docs/05-shadows.md. */
 #ifndef RT_SHADE_H
 #define RT_SHADE_H
 
-#include "render.h"
+#include "app/render.h"
+
+/* True when nothing lies between the hit point and the point at distance
+ * `dist` from it in the unit direction `l` (a light there is visible). */
+bool shade_visible(const Scene *scene, const Hit *hit, vec3s l, float dist, RenderCtx *ctx);
 
 /* Radiance arriving at the hit point from `light`, and the unit direction `l`
  * toward it: zero when something lies between the point and the light. */
 vec3s shade_incident(const Scene *scene, const Light *light, const Hit *hit,
                      vec3s *l, RenderCtx *ctx);
 
-/* Phong: the colour the hit point sends toward `eye`. */
+/* Phong's term for one light: what the hit point, of material m, sends toward
+ * the unit direction v (toward the eye) for radiance li arriving from the unit
+ * direction l: li (m_dif (n.l) + m_spe max(0, r.v)^shininess), r = l
+ * mirrored about n; zero when n.l <= 0 (the light is behind the surface). */
+vec3s shade_phong_light(const Material *m, const Hit *hit, vec3s v, vec3s li, vec3s l);
+
+/* Phong: the colour the hit point sends toward `eye`, the sum of every light's
+ * term. */
 vec3s shade_phong(const Scene *scene, const Hit *hit, vec3s eye, RenderCtx *ctx);
 
 /* The colour seen along `ray` (the background when it hits nothing). */

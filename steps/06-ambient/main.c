@@ -1,6 +1,6 @@
 /* Step 06, ambient light: Phong with shadows plus a constant ambient term,
  * and point lights the camera sees. docs/06-ambient.md. */
-#include "app.h"
+#include "app/app.h"
 #include "shade.h"
 
 static vec3s pixel(const Scene *scene, const Film *film, int i, int j, RenderCtx *ctx)

@@ -1,7 +1,7 @@
 /* Step 07, antialiasing: many camera samples per pixel, averaged (a box
  * filter), placed by a selectable sampler, and adaptive sampling that spends
  * them only where the first ones disagree. docs/07-antialiasing.md. */
-#include "app.h"
+#include "app/app.h"
 #include "sampler.h"
 #include "shade.h"
 

@@ -1,7 +1,7 @@
 /* Step 08, area lights: step 07's antialiased pixels, shaded with
  * parallelogram lights sampled as N point lights (soft shadows).
  * docs/08-area-lights.md. */
-#include "app.h"
+#include "app/app.h"
 #include "sampler.h"
 #include "shade.h"
 

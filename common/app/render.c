@@ -2,7 +2,7 @@
  * OpenMP threads one at a time (dynamic schedule). Each pixel depends only on
  * its own coordinates and the seed, so the picture is the same whatever the
  * thread count. docs/01-film.md; docs/performance.md on threads under load. */
-#include "render.h"
+#include "app/render.h"
 
 #include <omp.h>
 #include <stdio.h>

@@ -5,7 +5,7 @@
 
 #include <stdbool.h>
 #include <stdint.h>
-#include "image.h"
+#include "app/image.h"
 
 typedef struct Options {
   const char *scene_path; /* NULL: the step's default scene */

@@ -1,6 +1,6 @@
 /* Bounding volume hierarchy over boxes, built top-down with the binned surface
  * area heuristic: the build half of the scene's acceleration structure
- * (common/accel.c traverses it). docs/performance.md. */
+ * (common/accel/accel.c traverses it). docs/performance.md. */
 #ifndef RT_BVH_H
 #define RT_BVH_H
 
@@ -21,7 +21,8 @@ typedef struct Bvh {
   int n_items;
 } Bvh;
 
-/* Build over n >= 1 boxes lo[k]..hi[k], leaves of at most leaf_max items.
+/* Build over n >= 1 boxes lo[k]..hi[k], leaves of at most leaf_max items
+ * (leaf_max >= n: the root is one leaf of all of them).
  * Deterministic (same input, same tree). False (one line printed) when out of
  * memory; bvh is then empty. */
 bool bvh_build(Bvh *bvh, const float (*lo)[3], const float (*hi)[3], int n,

@@ -1,7 +1,9 @@
 /* Image files and comparison (step 01): tone maps, atomic writes (temporary
  * file, then rename), PFM by hand, PNG through libpng, JPG/HDR and loading
  * through stb. docs/01-film.md. */
-#include "image.h"
+#include "app/image.h"
+
+#include "film.h"
 
 #include <errno.h>
 #include <math.h>
@@ -26,33 +28,6 @@ bool image_tonemap_parse(const char *name, Tonemap *out)
     }
   }
   return false;
-}
-
-/* The sRGB transfer curve (IEC 61966-2-1) for linear c in [0, 1]. */
-static float srgb_encode(float c)
-{
-  return c <= 0.0031308f ? 12.92f * c : 1.055f * powf(c, 1.0f / 2.4f) - 0.055f;
-}
-
-unsigned char image_to_byte(float c, Tonemap tm)
-{
-  /* BEGIN SOLUTION step 01 */
-  if (!(c > 0.0f)) /* also maps NaN to 0 */
-    return 0;
-  if (tm == TONEMAP_REINHARD) /* infinity would give inf/inf = NaN: its limit is 1 */
-    c = isinf(c) ? 1.0f : c / (1.0f + c);
-  if (c > 1.0f)
-    c = 1.0f;
-  if (tm != TONEMAP_CLAMP)
-    c = srgb_encode(c);
-  /* Round to nearest: the lecture truncates, which darkens by half a code.
-   * Halves round up, as round() does; written out because roundf is a libm
-   * call per channel. k = trunc(x), and x - k is exact (Sterbenz). */
-  float x = 255.0f * c;
-  int k = (int)x;
-  return (unsigned char)(k + (x - (float)k >= 0.5f));
-  /* STUB: return 0; */
-  /* END SOLUTION */
 }
 
 /* Output file being written under a temporary name beside its final one. */
@@ -87,7 +62,7 @@ static void bytes_row(const Bytes *b, int j, unsigned char *out)
 {
   const float *row = b->rgb + (size_t)(b->h - 1 - j) * b->w * 3;
   for (int k = 0; k < b->w * 3; k++)
-    out[k] = image_to_byte(row[k], b->tm);
+    out[k] = film_to_byte(row[k], b->tm);
 }
 
 /* All the bytes of the picture, upright. */

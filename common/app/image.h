@@ -1,23 +1,16 @@
-/* Image files and image comparison (step 01): tone maps, atomic writes of
- * PNG/JPG/HDR through stb and of PFM by hand, loading, per-pixel comparison.
- * docs/01-film.md. Pixel buffers are RGB floats, rows from the bottom (j = 0)
+/* Image files and image comparison (step 01): atomic writes of PNG (libpng),
+ * JPG and HDR (stb) and PFM (by hand), every byte from film_to_byte; loading;
+ * per-pixel comparison. docs/01-film.md. Pixel buffers are RGB floats, rows from the bottom (j = 0)
  * like the film; files are written upright. */
 #ifndef RT_IMAGE_H
 #define RT_IMAGE_H
 
 #include <stdbool.h>
 
-typedef enum Tonemap {
-  TONEMAP_CLAMP,    /* byte = round(255 clamp(c, 0, 1)), the lecture's mapping */
-  TONEMAP_SRGB,     /* clamp, then the sRGB transfer curve */
-  TONEMAP_REINHARD, /* c / (1 + c), then sRGB */
-} Tonemap;
+#include "film.h"
 
 /* Parse "clamp", "srgb" or "reinhard"; false when unknown. */
 bool image_tonemap_parse(const char *name, Tonemap *out);
-
-/* The byte a linear value maps to under `tm`. */
-unsigned char image_to_byte(float c, Tonemap tm);
 
 /* True when `path` ends in an extension image_save can write; otherwise
  * prints one line naming the path and the accepted extensions. */

@@ -1,16 +1,15 @@
 /* BVH build (docs/performance.md): top-down, each node split where the binned
  * surface area heuristic says a ray pays least, i.e. minimising
  *   C_trav + (A_left / A) cost(left) + (A_right / A) cost(right),
- * with a leaf of n items costing C_leaf per block of `leaf_max` (the items of a
- * leaf are tested together by one SIMD kernel, so a leaf's cost is its blocks). */
-#include "bvh.h"
+ * with a leaf of n items costing n C_item (each item is tested on its own). */
+#include "accel/bvh.h"
 
 #include <float.h>
 #include <stdio.h>
 #include <stdlib.h>
 
 enum { BINS = 16, MAX_DEPTH = 40 };
-static const float COST_TRAV = 1.0f, COST_LEAF = 2.0f;
+static const float COST_TRAV = 1.0f, COST_ITEM = 1.5f;
 
 typedef struct Box {
   float lo[3], hi[3];
@@ -21,7 +20,7 @@ typedef struct Build {
   float (*cen)[3]; /* box centres (twice the centre: lo + hi, exact enough to bin) */
   int *order;
   BvhNode *nodes;
-  int n_nodes, leaf_max;
+  int n_nodes, n_items, leaf_max;
 } Build;
 
 static Box box_empty(void)
@@ -44,15 +43,17 @@ static float box_area(const Box *b)
   return dx < 0.0f ? 0.0f : dx * dy + dy * dz + dz * dx;
 }
 
-static float leaf_cost(const Build *b, int count)
+static float leaf_cost(int count)
 {
-  return COST_LEAF * (float)((count + b->leaf_max - 1) / b->leaf_max);
+  return COST_ITEM * (float)count;
 }
 
+/* Clamped before the conversion: a huge or NaN product (overflowing bounds)
+ * lands in a boundary bin instead of being converted out of int's range. */
 static int bin_of(float c, float lo, float scale)
 {
-  int k = (int)((c - lo) * scale);
-  return k < 0 ? 0 : k >= BINS ? BINS - 1 : k;
+  float x = (c - lo) * scale;
+  return x >= (float)(BINS - 1) ? BINS - 1 : x > 0.0f ? (int)x : 0;
 }
 
 /* The best binned split of items [first, first + count): its cost, axis and
@@ -93,8 +94,8 @@ static float best_split(const Build *b, int first, int count, const Box *cb,
       acc_n += n[k - 1];
       if (acc_n == 0 || right_n[k] == 0)
         continue;
-      float cost = COST_TRAV + (box_area(&acc) * leaf_cost(b, acc_n) +
-                                right_area[k] * leaf_cost(b, right_n[k])) / area;
+      float cost = COST_TRAV + (box_area(&acc) * leaf_cost(acc_n) +
+                                right_area[k] * leaf_cost(right_n[k])) / area;
       if (cost < best) {
         best = cost;
         *axis = a;
@@ -113,9 +114,10 @@ static int partition(Build *b, int first, int count, const Box *cb, float area,
                      int depth, bool *leaf)
 {
   int axis = 0, split_bin = 0;
-  float cost = depth < MAX_DEPTH ? best_split(b, first, count, cb, area, &axis, &split_bin)
-                                 : FLT_MAX;
-  *leaf = count <= b->leaf_max && !(cost < leaf_cost(b, count));
+  float cost = depth < MAX_DEPTH && count > 1
+                   ? best_split(b, first, count, cb, area, &axis, &split_bin)
+                   : FLT_MAX;
+  *leaf = count <= b->leaf_max && !(cost < leaf_cost(count));
   if (*leaf)
     return first;
   if (cost < FLT_MAX) {
@@ -148,8 +150,8 @@ static void build_node(Build *b, int node, int first, int count, int depth)
     nd->lo[a] = box.lo[a];
     nd->hi[a] = box.hi[a];
   }
-  bool leaf;
-  int mid = partition(b, first, count, &cb, box_area(&box), depth, &leaf);
+  bool leaf = count <= 1 || b->leaf_max >= b->n_items; /* one leaf of everything */
+  int mid = leaf ? first : partition(b, first, count, &cb, box_area(&box), depth, &leaf);
   if (leaf) {
     nd->index = first;
     nd->meta = count;
@@ -170,7 +172,7 @@ static void build_node(Build *b, int node, int first, int count, int depth)
 bool bvh_build(Bvh *bvh, const float (*lo)[3], const float (*hi)[3], int n,
                int leaf_max)
 {
-  Build b = {.lo = lo, .hi = hi, .leaf_max = leaf_max, .n_nodes = 1};
+  Build b = {.lo = lo, .hi = hi, .leaf_max = leaf_max, .n_nodes = 1, .n_items = n};
   b.cen = malloc((size_t)n * sizeof *b.cen);
   b.order = malloc((size_t)n * sizeof *b.order);
   b.nodes = malloc((size_t)(2 * n - 1) * sizeof *b.nodes);

@@ -1,7 +1,7 @@
 /* Scene-file parser: the statements of docs/scene-format.md, checked as they
  * are read; material names are resolved at the end, so a material may be
  * defined after its first use. Introduced in step 02. */
-#include "parser.h"
+#include "app/parser.h"
 
 #include <errno.h>
 #include <stdio.h>
@@ -9,7 +9,7 @@
 #include <string.h>
 
 #include "film.h"
-#include "lexer.h"
+#include "app/lexer.h"
 
 /* Statements that may appear once per file. */
 enum { ONCE_FILM, ONCE_CAMERA, ONCE_AMBIENT, ONCE_BACKGROUND, ONCE_SAMPLES,

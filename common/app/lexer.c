@@ -1,7 +1,7 @@
 /* Scene-file lexer: a line's words with their columns, and readers for the
  * values statements take (numbers, vectors, names, keyword lists). Every error
  * is one line FILE:LINE:COL. Introduced in step 02; docs/scene-format.md. */
-#include "lexer.h"
+#include "app/lexer.h"
 
 #include <stdarg.h>
 #include <stdio.h>

@@ -1,6 +1,6 @@
 /* The shared command line (step 01): every step takes the same options and
  * says which ones it ignores. README.md lists them. */
-#include "cli.h"
+#include "app/cli.h"
 
 #include <errno.h>
 #include <limits.h>
@@ -10,7 +10,7 @@
 #include <string.h>
 
 #include "film.h"
-#include "render.h"
+#include "app/render.h"
 #include "sampler.h"
 #include "scene.h"
 

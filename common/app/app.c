@@ -1,12 +1,14 @@
 /* A step's whole program around its pixel function (step 01 on): options,
  * scene, render, save, summary. README.md describes the command line. */
-#include "app.h"
+#include "app/app.h"
 
 #include <stdio.h>
 #include <string.h>
 
-#include "cli.h"
-#include "parser.h"
+#include "accel/accel.h"
+#include "app/cli.h"
+#include "app/image.h"
+#include "app/parser.h"
 #include "sampler.h"
 
 /* Say once what the step leaves out of this scene or command line. */
@@ -89,7 +91,7 @@ int app_run(int argc, char **argv, const Step *step)
     return 2;
   }
   say_ignored(step, &o, 0);
-  if (!scene_prepare(&scene, step->features)) {
+  if (!scene_prepare(&scene, step->features) || !accel_build(&scene)) {
     scene_free(&scene);
     return 1;
   }
@@ -108,7 +110,7 @@ int app_run(int argc, char **argv, const Step *step)
   if (film_init(&film, scene.width, scene.height)) {
     RenderStats st;
     render(&scene, &film, step->pixel, &set, &st);
-    if (film_save(&film, out, o.tonemap)) {
+    if (image_save(out, film.width, film.height, film.rgb, o.tonemap)) {
       status = 0;
       if (!o.quiet)
         summary(step, out, &film, &scene, &st);

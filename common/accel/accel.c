@@ -1,0 +1,312 @@
+/* Acceleration structure (docs/performance.md): the lit spheres under a
+ * bounding volume hierarchy (common/accel/bvh.c), everything else in a list.
+ * The boxes only choose which instances a ray meets; each one met is tested
+ * with scene_instance_hit_t, the shape's own function, so the answers are
+ * those of scene.c's plain loop. */
+#include "accel/accel.h"
+
+#include <limits.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "accel/bvh.h"
+#include "accel/hull.h"
+
+enum {
+  STACK = 64,  /* traversal stack: the tree is at most about 60 levels deep */
+  LEAF_MAX = 4 /* spheres per leaf of the hierarchy */
+};
+
+typedef struct Accel {
+  SceneIndex base;  /* first member: scene->index points here */
+  BvhNode *nodes;   /* nodes[0] is the root; a leaf holds spheres[index ..
+                     * index + meta), in increasing instance order */
+  int *spheres;     /* instance indices of the lit spheres, in leaf order */
+  int *others;      /* instance indices of everything else, lit ones first */
+  int n_others, n_others_lit;
+} Accel;
+
+/* The closest hit so far: distance and instance index (INT_MAX: none). */
+typedef struct Best {
+  float t;
+  int inst;
+} Best;
+
+/* Test instance `id` and keep it when it is nearer, or as near and earlier in
+ * instance order (the plain loop keeps the first of equal distances). Once
+ * something is found, the test's limit is just above its distance, so that an
+ * equal distance comes back and is compared by index. */
+static void consider(const Scene *scene, int id, Ray r, Best *best)
+{
+  float limit = best->inst == INT_MAX ? best->t : nextafterf(best->t, INFINITY);
+  float t = scene_instance_hit_t(&scene->instances[id], r, limit);
+  if (t < best->t || (t == best->t && best->inst != INT_MAX && id < best->inst)) {
+    best->t = t;
+    best->inst = id;
+  }
+}
+
+/* Ray's distance into a node's box; NaN (every comparison false) when it
+ * misses it or enters beyond tmax. The exit distance is widened by 3 ulps'
+ * worth (PBRT's conservative slab test) so rounding never culls a box the ray
+ * touches. */
+static float box_enter(const BvhNode *nd, vec3s o, vec3s inv_d, float tmax)
+{
+  float t_in = 0.0f, t_out = tmax;
+  for (int a = 0; a < 3; a++) {
+    float t0 = (nd->lo[a] - o.raw[a]) * inv_d.raw[a];
+    float t1 = (nd->hi[a] - o.raw[a]) * inv_d.raw[a];
+    float near = t0 < t1 ? t0 : t1, far = t0 < t1 ? t1 : t0;
+    far *= 1.0f + 6.0f * 0x1p-24f;
+    t_in = near > t_in ? near : t_in;
+    t_out = far < t_out ? far : t_out;
+  }
+  return t_in <= t_out ? t_in : NAN;
+}
+
+static vec3s inverse_dir(vec3s d)
+{
+  return vec_make(1.0f / d.x, 1.0f / d.y, 1.0f / d.z);
+}
+
+/* Nearer child first; a box entered beyond the best distance is skipped (<=:
+ * an equal distance may still win on instance index). */
+static void bvh_closest(const Scene *scene, const Accel *acc, Ray r, Best *best)
+{
+  vec3s inv_d = inverse_dir(r.d);
+  int stack[STACK], top = 0, node = 0;
+  for (;;) {
+    const BvhNode *nd = &acc->nodes[node];
+    if (box_enter(nd, r.o, inv_d, best->t) <= best->t) {
+      if (nd->meta > 0) {
+        for (int k = nd->index; k < nd->index + nd->meta; k++)
+          consider(scene, acc->spheres[k], r, best);
+      } else {
+        bool neg = r.d.raw[-1 - nd->meta] < 0.0f;
+        stack[top++] = nd->index + !neg;
+        node = nd->index + neg;
+        continue;
+      }
+    }
+    if (top == 0)
+      return;
+    node = stack[--top];
+  }
+}
+
+static bool bvh_any(const Scene *scene, const Accel *acc, Ray r, float tmax)
+{
+  vec3s inv_d = inverse_dir(r.d);
+  int stack[STACK], top = 0, node = 0;
+  for (;;) {
+    const BvhNode *nd = &acc->nodes[node];
+    if (box_enter(nd, r.o, inv_d, tmax) < tmax) {
+      if (nd->meta > 0) {
+        for (int k = nd->index; k < nd->index + nd->meta; k++)
+          if (scene_instance_hit_t(&scene->instances[acc->spheres[k]], r, tmax) < tmax)
+            return true;
+      } else {
+        stack[top++] = nd->index + 1;
+        node = nd->index;
+        continue;
+      }
+    }
+    if (top == 0)
+      return false;
+    node = stack[--top];
+  }
+}
+
+/* The planes first: the floor a ray meets bounds the boxes worth entering. */
+static const Instance *accel_closest(const Scene *scene, Ray r, float *tmax)
+{
+  const Accel *acc = (const Accel *)scene->index;
+  Best best = {*tmax, INT_MAX};
+  for (int k = 0; k < acc->n_others; k++)
+    consider(scene, acc->others[k], r, &best);
+  if (acc->nodes)
+    bvh_closest(scene, acc, r, &best);
+  if (best.inst == INT_MAX)
+    return NULL;
+  *tmax = best.t;
+  return &scene->instances[best.inst];
+}
+
+static bool accel_any(const Scene *scene, Ray r, float tmax)
+{
+  const Accel *acc = (const Accel *)scene->index;
+  for (int k = 0; k < acc->n_others_lit; k++)
+    if (scene_instance_hit_t(&scene->instances[acc->others[k]], r, tmax) < tmax)
+      return true;
+  return acc->nodes && bvh_any(scene, acc, r, tmax);
+}
+
+static void accel_destroy(SceneIndex *index)
+{
+  Accel *acc = (Accel *)index;
+  free(acc->nodes);
+  free(acc->spheres);
+  free(acc->others);
+  free(acc);
+}
+
+/* ---------------------------------------------------------------- building */
+
+/* Which layout RT_ACCEL asks for: 0 plain loop, 1 one leaf, 2 hierarchy,
+ * -1 automatic. */
+static int layout_wanted(void)
+{
+  const char *env = getenv("RT_ACCEL");
+  if (!env || !*env)
+    return -1;
+  return strcmp(env, "loop") == 0 ? 0 : strcmp(env, "flat") == 0 ? 1
+       : strcmp(env, "bvh") == 0  ? 2 : -1;
+}
+
+/* Sphere k's box, padded by a relative 2^-16 of the radius and 2^-20 of the
+ * coordinates' magnitude so that a grazing ray sphere_hit_t accepts is never
+ * culled by it. */
+static void sphere_box(const Sphere *s, float lo[3], float hi[3])
+{
+  float pad = 0x1p-16f * s->radius + 0x1p-20f * (vec_max_abs(s->center) + s->radius);
+  for (int a = 0; a < 3; a++) {
+    lo[a] = s->center.raw[a] - s->radius - pad;
+    hi[a] = s->center.raw[a] + s->radius + pad;
+  }
+}
+
+static int compare_int(const void *a, const void *b)
+{
+  int x = *(const int *)a, y = *(const int *)b;
+  return (x > y) - (x < y);
+}
+
+/* The hierarchy over the spheres ids[0 .. n): one leaf of all of them when
+ * `flat`, else binned SAH with leaves of at most LEAF_MAX. Leaves list their
+ * spheres in instance order. */
+static bool build_tree(Accel *acc, const Scene *scene, const int *ids, int n, bool flat)
+{
+  float(*lo)[3] = malloc((size_t)n * sizeof *lo), (*hi)[3] = malloc((size_t)n * sizeof *hi);
+  Bvh bvh = {0};
+  bool ok = lo && hi;
+  for (int k = 0; ok && k < n; k++)
+    sphere_box(&scene->instances[ids[k]].sphere, lo[k], hi[k]);
+  ok = ok && bvh_build(&bvh, (const float(*)[3])lo, (const float(*)[3])hi, n,
+                       flat ? n : LEAF_MAX);
+  free(lo);
+  free(hi);
+  if (!ok)
+    return false;
+  acc->spheres = bvh.order; /* leaf order, as indices into ids: map them */
+  for (int k = 0; k < n; k++)
+    acc->spheres[k] = ids[acc->spheres[k]];
+  for (int k = 0; k < bvh.n_nodes; k++)
+    if (bvh.nodes[k].meta > 0)
+      qsort(acc->spheres + bvh.nodes[k].index, (size_t)bvh.nodes[k].meta, sizeof(int),
+            compare_int);
+  acc->nodes = bvh.nodes;
+  return true;
+}
+
+bool accel_build(Scene *scene)
+{
+  if (scene->index) {
+    scene->index->destroy(scene->index);
+    scene->index = NULL;
+  }
+  int layout = layout_wanted();
+  if (layout == 0)
+    return true;
+  Accel *acc = calloc(1, sizeof *acc);
+  int *ids = malloc((size_t)(scene->n_instances + 1) * sizeof *ids);
+  if (acc)
+    acc->others = malloc((size_t)(scene->n_instances + 1) * sizeof *acc->others);
+  bool ok = acc && ids && acc->others;
+  int n = 0;
+  for (int k = 0; ok && k < scene->n_instances; k++) {
+    if (k < scene->n_shapes && scene->instances[k].shape == SHAPE_SPHERE)
+      ids[n++] = k;
+    else
+      acc->others[acc->n_others++] = k;
+    if (k < scene->n_shapes)
+      acc->n_others_lit = acc->n_others;
+  }
+  if (ok && n > 0)
+    ok = build_tree(acc, scene, ids, n, layout == 1 || (layout < 0 && n <= ACCEL_FLAT_MAX));
+  free(ids);
+  if (!ok) {
+    fprintf(stderr, "accel: out of memory for %d instances\n", scene->n_instances);
+    if (acc)
+      accel_destroy(&acc->base);
+    return false;
+  }
+  acc->base = (SceneIndex){.closest = accel_closest, .any = accel_any, .destroy = accel_destroy};
+  scene->index = &acc->base;
+  return true;
+}
+
+/* ---------------------------------------------------------------- shadow volume */
+
+static bool leaf_may_occlude(const Scene *scene, const Accel *acc, const BvhNode *nd,
+                             const ShadowHull *h)
+{
+  for (int k = nd->index; k < nd->index + nd->meta; k++) {
+    const Sphere *s = &scene->instances[acc->spheres[k]].sphere;
+    if (hull_may_meet_sphere(h, s->center, s->radius))
+      return true;
+  }
+  return false;
+}
+
+/* The traversal of bvh_any, with boxes and spheres tested against the hull. */
+static bool bvh_may_occlude(const Scene *scene, const Accel *acc, const ShadowHull *h)
+{
+  int stack[STACK], top = 0, node = 0;
+  for (;;) {
+    const BvhNode *nd = &acc->nodes[node];
+    if (hull_may_meet_box(h, nd->lo, nd->hi)) {
+      if (nd->meta > 0) {
+        if (leaf_may_occlude(scene, acc, nd, h))
+          return true;
+      } else {
+        stack[top++] = nd->index + 1;
+        node = nd->index;
+        continue;
+      }
+    }
+    if (top == 0)
+      return false;
+    node = stack[--top];
+  }
+}
+
+static bool instance_may_occlude(const Instance *inst, const ShadowHull *h)
+{
+  switch (inst->shape) {
+  case SHAPE_SPHERE: return hull_may_meet_sphere(h, inst->sphere.center, inst->sphere.radius);
+  case SHAPE_PLANE: return hull_may_meet_plane(h, &inst->plane);
+  case SHAPE_QUAD: return true;
+  }
+  return true;
+}
+
+/* Not inlined: once per shading point, and inlined (LTO) into a step's
+ * sample loop it made that loop's code 10 % slower even where never called. */
+__attribute__((noinline)) bool accel_quad_unoccluded(const Scene *scene, const Hit *hit,
+                                                     const Quad *q)
+{
+  ShadowHull h = hull_make(hit, q);
+  if (!scene->index || scene->index->destroy != accel_destroy) {
+    for (int k = 0; k < scene->n_shapes; k++)
+      if (instance_may_occlude(&scene->instances[k], &h))
+        return false;
+    return true;
+  }
+  const Accel *acc = (const Accel *)scene->index;
+  for (int k = 0; k < acc->n_others_lit; k++)
+    if (instance_may_occlude(&scene->instances[acc->others[k]], &h))
+      return false;
+  return !(acc->nodes && bvh_may_occlude(scene, acc, &h));
+}
