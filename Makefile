@@ -256,4 +256,7 @@ starter:
 .PHONY: all build deps bench-deps test stress test-step sanitize images diffs \
         check-diffs bench bench-accuracy clean help starter mistakes
 
+# Each tool's rules (fuzzing, grading, region checks, ...) in a file of its own.
+include $(wildcard mk/*.mk)
+
 -include $(shell find $(BUILD)/obj -name '*.d' 2>/dev/null)

@@ -1,10 +1,9 @@
 /* Unit tests of ray-sphere intersection (step 02): each root case, rays from
  * inside, spheres behind, tmax, normals facing the ray. docs/02-intersection.md. */
-#include <criterion/criterion.h>
-
-#include <math.h>
-
+#include "check.h"
 #include "sphere.h"
+
+#define DOC "docs/02-intersection.md, \"Ray-sphere\""
 
 static Ray ray(float ox, float oy, float oz, float dx, float dy, float dz)
 {
@@ -18,13 +17,17 @@ static const Sphere S = {.center = {.x = 0.0f, .y = 0.0f, .z = -5.0f}, .radius =
 
 Test(sphere, two_roots_gives_the_nearest)
 {
+  Check c = CHECK("sphere_hit_t", DOC);
   float t = sphere_hit_t(&S, ray(0, 0, 0, 0, 0, -1), INFINITY);
-  cr_expect(t == 4.0f, "t = %.9g, expected 4", t);
+  CHECK_NEAR(&c, 4.0, t, 0.0, "ray from the origin along -z, unit sphere centred at z = -5 "
+             "(roots 4 and 6): t");
+  Check f = CHECK("sphere_hit_fill", DOC);
   Hit h;
-  sphere_hit_fill(&S, ray(0, 0, 0, 0, 0, -1), t, &h);
-  cr_expect(h.t == 4.0f && h.p.x == 0.0f && h.p.y == 0.0f && h.p.z == -4.0f);
-  cr_expect(h.n.x == 0.0f && h.n.y == 0.0f && h.n.z == 1.0f, "n (%g %g %g)", h.n.x, h.n.y, h.n.z);
-  cr_expect(!h.backface);
+  sphere_hit_fill(&S, ray(0, 0, 0, 0, 0, -1), 4.0f, &h);
+  CHECK_NEAR(&f, 4.0, h.t, 0.0, "the same ray at t = 4: hit.t");
+  CHECK_VEC(&f, vec_make(0.0f, 0.0f, -4.0f), h.p, 0.0, "the same ray at t = 4: hit.p");
+  CHECK_VEC(&f, vec_make(0.0f, 0.0f, 1.0f), h.n, 0.0, "the same ray at t = 4: hit.n");
+  CHECK_INT(&f, 0, h.backface, "the same ray at t = 4, from outside: hit.backface");
 }
 
 Test(sphere, oblique_hit_matches_the_long_double_quadratic)
@@ -40,71 +43,89 @@ Test(sphere, oblique_hit_matches_the_long_double_quadratic)
   long double b = f[0] * d[0] + f[1] * d[1] + f[2] * d[2];
   long double c = f[0] * f[0] + f[1] * f[1] + f[2] * f[2] - (long double)s.radius * s.radius;
   long double t0 = (-b - sqrtl(b * b - dd * c)) / dd;
+  Check ct = CHECK("sphere_hit_t", DOC);
   float t = sphere_hit_t(&s, r, INFINITY);
-  cr_expect(fabsl(t - t0) <= 1e-5L * t0, "t = %.9g, expected %.12Lg", t, t0);
+  CHECK_REL(&ct, (double)t0, t, 1e-5, "oblique ray toward a sphere of radius 1.3 about 6 "
+            "units away: t against the quadratic solved in long double");
+  Check fill = CHECK("sphere_hit_fill", DOC);
   Hit h;
-  sphere_hit_fill(&s, r, t, &h);
+  sphere_hit_fill(&s, r, (float)t0, &h);
   vec3s rel = glms_vec3_sub(h.p, s.center);
-  cr_expect(fabsf(glms_vec3_norm(rel) - s.radius) <= 4e-7f, "p is %.9g from the centre",
-            glms_vec3_norm(rel));
-  cr_expect(fabsf(glms_vec3_norm(h.n) - 1.0f) <= 1e-6f);
-  cr_expect(glms_vec3_dot(h.n, r.d) < 0.0f, "normal must face the ray");
-  cr_expect(!h.backface);
+  CHECK_NEAR(&fill, s.radius, glms_vec3_norm(rel), 4e-7, "the same hit: |p - c| (p on the sphere)");
+  CHECK_NEAR(&fill, 1.0, glms_vec3_norm(h.n), 1e-6, "the same hit: |n|");
+  CHECK_THAT(&fill, glms_vec3_dot(h.n, r.d) < 0.0f,
+             "the same hit: n must face the ray (n.d < 0), got n.d = %.9g",
+             glms_vec3_dot(h.n, r.d));
+  CHECK_INT(&fill, 0, h.backface, "the same hit, from outside: hit.backface");
 }
 
 Test(sphere, tangent_ray_touches_once)
 {
   /* The line x = 1 grazes the unit sphere at (1, 0, -5): discriminant 0. */
+  Check c = CHECK("sphere_hit_t", DOC);
   float t = sphere_hit_t(&S, ray(1, 0, 0, 0, 0, -1), INFINITY);
-  cr_expect(t == 5.0f, "t = %.9g, expected 5", t);
+  CHECK_NEAR(&c, 5.0, t, 0.0, "ray x = 1 along -z grazing the unit sphere at z = -5 "
+             "(discriminant 0): t");
 }
 
 Test(sphere, miss_returns_infinity)
 {
-  cr_expect(isinf(sphere_hit_t(&S, ray(1.001f, 0, 0, 0, 0, -1), INFINITY)));
-  cr_expect(isinf(sphere_hit_t(&S, ray(0, 0, 0, 0, 1, 0), INFINITY)));
-  cr_expect(isinf(sphere_hit_t(&S, ray(0, 0, 0, 1, 0, -1), INFINITY))); /* 45 degrees off */
+  Check c = CHECK("sphere_hit_t", DOC);
+  CHECK_NEAR(&c, INFINITY, sphere_hit_t(&S, ray(1.001f, 0, 0, 0, 0, -1), INFINITY), 0.0,
+             "ray x = 1.001 along -z, just outside the unit sphere at z = -5: a miss is INFINITY");
+  CHECK_NEAR(&c, INFINITY, sphere_hit_t(&S, ray(0, 0, 0, 0, 1, 0), INFINITY), 0.0,
+             "ray from the origin along +y, sphere at z = -5: a miss is INFINITY");
+  CHECK_NEAR(&c, INFINITY, sphere_hit_t(&S, ray(0, 0, 0, 1, 0, -1), INFINITY), 0.0,
+             "ray from the origin 45 degrees off the sphere's direction: a miss is INFINITY");
 }
 
 Test(sphere, origin_inside_hits_the_far_side_from_behind)
 {
   /* From the centre, the sphere is 1 away in every direction. */
   Ray r = ray(0, 0, -5, 0, 1, 0);
-  float t = sphere_hit_t(&S, r, INFINITY);
-  cr_expect(t == 1.0f, "t = %.9g", t);
+  Check c = CHECK("sphere_hit_t", DOC);
+  CHECK_NEAR(&c, 1.0, sphere_hit_t(&S, r, INFINITY), 0.0,
+             "ray from the centre of the unit sphere along +y (roots -1 and 1): t");
+  /* Off-centre inside: from (0, 0, -5.5), the far side at t = 0.5 or 1.5. */
+  CHECK_NEAR(&c, 0.5, sphere_hit_t(&S, ray(0, 0, -5.5f, 0, 0, -1), INFINITY), 0.0,
+             "ray from (0, 0, -5.5), inside, along -z: t");
+  CHECK_NEAR(&c, 1.5, sphere_hit_t(&S, ray(0, 0, -5.5f, 0, 0, 1), INFINITY), 0.0,
+             "ray from (0, 0, -5.5), inside, along +z: t");
+  Check f = CHECK("sphere_hit_fill", DOC);
   Hit h;
-  sphere_hit_fill(&S, r, t, &h);
-  cr_expect(h.backface, "the ray leaves the sphere: backface");
-  cr_expect(h.n.x == 0.0f && h.n.y == -1.0f && h.n.z == 0.0f,
-            "normal (%g %g %g) must be flipped to face the ray", h.n.x, h.n.y, h.n.z);
-  cr_expect(h.p.y == 0.0f + 1.0f && h.p.z == -5.0f);
-  /* Off-centre inside: from (0, 0, -5.5) along -z, the far side at t = 0.5. */
-  t = sphere_hit_t(&S, ray(0, 0, -5.5f, 0, 0, -1), INFINITY);
-  cr_expect(t == 0.5f, "t = %.9g", t);
-  t = sphere_hit_t(&S, ray(0, 0, -5.5f, 0, 0, 1), INFINITY);
-  cr_expect(t == 1.5f, "t = %.9g", t);
+  sphere_hit_fill(&S, r, 1.0f, &h);
+  CHECK_INT(&f, 1, h.backface, "ray from the centre along +y, at t = 1 (it leaves the "
+            "sphere): hit.backface");
+  CHECK_VEC(&f, vec_make(0.0f, -1.0f, 0.0f), h.n, 0.0,
+            "the same hit: n, flipped to face the ray");
+  CHECK_VEC(&f, vec_make(0.0f, 1.0f, -5.0f), h.p, 0.0, "the same hit: p");
 }
 
 Test(sphere, behind_the_origin_is_not_hit)
 {
-  /* Both roots negative: the sphere is at t = -6 .. -4. */
-  cr_expect(isinf(sphere_hit_t(&S, ray(0, 0, 0, 0, 0, 1), INFINITY)));
+  Check c = CHECK("sphere_hit_t", DOC);
+  CHECK_NEAR(&c, INFINITY, sphere_hit_t(&S, ray(0, 0, 0, 0, 0, 1), INFINITY), 0.0,
+             "ray from the origin along +z, sphere behind it (roots -6 and -4): a miss");
 }
 
 Test(sphere, tmax_is_respected)
 {
   Ray r = ray(0, 0, 0, 0, 0, -1);
-  cr_expect(isinf(sphere_hit_t(&S, r, 3.0f)), "tmax 3 < 4: no hit");
-  cr_expect(isinf(sphere_hit_t(&S, r, 4.0f)), "t must be < tmax, not <=");
-  cr_expect(sphere_hit_t(&S, r, 4.5f) == 4.0f);
-  /* From inside with tmax before the far side. */
-  cr_expect(isinf(sphere_hit_t(&S, ray(0, 0, -5, 0, 0, -1), 0.5f)));
+  Check c = CHECK("sphere_hit_t", DOC);
+  CHECK_NEAR(&c, INFINITY, sphere_hit_t(&S, r, 3.0f), 0.0,
+             "hit at t = 4 with tmax = 3: a miss");
+  CHECK_NEAR(&c, INFINITY, sphere_hit_t(&S, r, 4.0f), 0.0,
+             "hit at t = 4 with tmax = 4 (t must be < tmax, not <=): a miss");
+  CHECK_NEAR(&c, 4.0, sphere_hit_t(&S, r, 4.5f), 0.0, "hit at t = 4 with tmax = 4.5: t");
+  CHECK_NEAR(&c, INFINITY, sphere_hit_t(&S, ray(0, 0, -5, 0, 0, -1), 0.5f), 0.0,
+             "from the centre, far side at t = 1, tmax = 0.5: a miss");
 }
 
 Test(sphere, normal_always_faces_the_ray)
 {
   /* Rays from many directions toward and from inside the sphere. */
   Sphere s = {.center = vec_make(1.0f, 2.0f, 3.0f), .radius = 2.0f};
+  Check ct = CHECK("sphere_hit_t", DOC), f = CHECK("sphere_hit_fill", DOC);
   for (int k = 0; k < 100; k++) {
     float a = 0.37f * (float)k, b = 0.11f * (float)k;
     vec3s d = glms_vec3_normalize(vec_make(cosf(a) * cosf(b), sinf(b), sinf(a) * cosf(b)));
@@ -112,14 +133,18 @@ Test(sphere, normal_always_faces_the_ray)
     vec3s o_in = glms_vec3_add(s.center, glms_vec3_scale(d, 0.5f * (float)(k % 3) - 0.5f));
     Ray rays[2] = {{o_out, d}, {o_in, d}};
     for (int q = 0; q < 2; q++) {
+      const char *from = q == 0 ? "from outside" : "from inside";
+      float t_want = q == 0 ? 8.0f : 2.0f - (0.5f * (float)(k % 3) - 0.5f);
       float t = sphere_hit_t(&s, rays[q], INFINITY);
-      cr_assert(isfinite(t), "ray %d/%d missed", k, q);
+      CHECK_NEAR(&ct, t_want, t, 1e-5, "ray %d %s toward the centre of a sphere of radius 2: t",
+                 k, from);
       Hit h;
-      sphere_hit_fill(&s, rays[q], t, &h);
-      cr_expect(glms_vec3_dot(h.n, d) < 0.0f, "ray %d/%d: n.d >= 0", k, q);
-      cr_expect(h.backface == (q == 1), "ray %d/%d: backface %d", k, q, h.backface);
-      cr_expect(fabsf(t - (q == 0 ? 8.0f : 2.0f - (0.5f * (float)(k % 3) - 0.5f))) < 1e-5f,
-                "ray %d/%d: t = %.9g", k, q, t);
+      sphere_hit_fill(&s, rays[q], t_want, &h);
+      CHECK_THAT(&f, glms_vec3_dot(h.n, d) < 0.0f, "ray %d %s: n must face the ray (n.d < 0), "
+                 "got n.d = %.9g", k, from, glms_vec3_dot(h.n, d));
+      CHECK_INT(&f, q == 1, h.backface, "ray %d %s: hit.backface", k, from);
     }
   }
+  CHECK_DONE(&ct);
+  CHECK_DONE(&f);
 }
