@@ -7,6 +7,7 @@
 
 #include <limits.h>
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -34,13 +35,24 @@ typedef struct Best {
   int inst;
 } Best;
 
+/* The float just above x, for a finite x > 0 (a hit distance): its bits + 1
+ * (nextafterf is a library call). */
+static float next_up(float x)
+{
+  uint32_t bits;
+  memcpy(&bits, &x, sizeof bits);
+  bits++;
+  memcpy(&x, &bits, sizeof x);
+  return x;
+}
+
 /* Test instance `id` and keep it when it is nearer, or as near and earlier in
  * instance order (the plain loop keeps the first of equal distances). Once
  * something is found, the test's limit is just above its distance, so that an
  * equal distance comes back and is compared by index. */
 static void consider(const Scene *scene, int id, Ray r, Best *best)
 {
-  float limit = best->inst == INT_MAX ? best->t : nextafterf(best->t, INFINITY);
+  float limit = best->inst == INT_MAX ? best->t : next_up(best->t);
   float t = scene_instance_hit_t(&scene->instances[id], r, limit);
   if (t < best->t || (t == best->t && best->inst != INT_MAX && id < best->inst)) {
     best->t = t;
