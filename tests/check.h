@@ -83,6 +83,17 @@ static inline const char *check_within_(char *buf, size_t size, double tol)
     }                                                                            \
   } while (0)
 
+/* A precondition the rest of the test needs (a file written, a hit found):
+ * when it fails, say so in the same form and stop the test. */
+#define CHECK_REQUIRE(c, ok, ...)                                                \
+  do {                                                                           \
+    if (!(ok)) {                                                                 \
+      char check_what_[CHECK_TEXT];                                              \
+      snprintf(check_what_, sizeof check_what_, __VA_ARGS__);                    \
+      cr_assert(0, "%s: %s\n  read %s", (c)->fn, check_what_, (c)->doc);        \
+    }                                                                            \
+  } while (0)
+
 /* |got - expected| <= tol (equal infinities pass; NaN fails). */
 #define CHECK_NEAR(c, expected, got, tol, ...)                                   \
   do {                                                                           \
