@@ -168,11 +168,11 @@ $(BUILD)/tests/stress: $(STRESS_OBJ) $(LIBCOMMON)
 	@$(CC) $(CFLAGS) $(LDFLAGS) $^ $(LDLIBS) -lcriterion -lmpfr -lgmp -o $@
 STRESSBIN := $(if $(STRESS_TESTS),$(BUILD)/tests/stress)
 
-test: $(TESTBIN) $(STRESSBIN) $(BUILD)/bin/05-shadows $(BUILD)/bin/mistakes
+test: $(TESTBIN) $(STRESSBIN) $(BUILD)/bin/04-phong $(BUILD)/bin/05-shadows $(BUILD)/bin/mistakes
 	@tests/run.sh $(TESTBIN) $(STRESSBIN)
 
-# The stress tests render through step 05 and tools/mistakes.c (docs/accuracy.md).
-stress: $(STRESSBIN) $(BUILD)/bin/05-shadows $(BUILD)/bin/mistakes
+# The stress tests render through steps 04, 05 and tools/mistakes.c (docs/accuracy.md).
+stress: $(STRESSBIN) $(BUILD)/bin/04-phong $(BUILD)/bin/05-shadows $(BUILD)/bin/mistakes
 	@tests/run.sh --verbose $(STRESSBIN)
 
 # make test-step N  (or N=3): one step's unit tests and image test.
