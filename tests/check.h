@@ -3,7 +3,7 @@
  * back, in decimal. A test that loops over many cases reports its first
  * CHECK_SHOWN failures, then (CHECK_DONE) how many failed in all.
  *
- *   Check c = CHECK("sphere_hit_t", "docs/02-intersection.md, \"Ray-sphere\"");
+ *   Check c = CHECK("sphere_hit_t", "docs/02-intersection.md, \"What you write\"");
  *   CHECK_NEAR(&c, 4.0, t, 0.0, "ray from the origin along -z, unit sphere at z = -5: t");
  *   CHECK_DONE(&c);
  *
@@ -12,7 +12,7 @@
  *   sphere_hit_t: ray from the origin along -z, unit sphere at z = -5: t
  *     expected 4
  *     got      inf
- *     read docs/02-intersection.md, "Ray-sphere"
+ *     read docs/02-intersection.md, "What you write"
  *
  * (Criterion indents each line by two more spaces.) CHECK_RELYING also names
  * the earlier steps' functions a test runs ("this test also runs ..."), and
@@ -37,7 +37,7 @@ enum { CHECK_SHOWN = 3, CHECK_TEXT = 768 };
 
 typedef struct Check {
   const char *fn;     /* the function under test, "sphere_hit_t" */
-  const char *doc;    /* where its doc explains it, "docs/02-intersection.md, \"Ray-sphere\"" */
+  const char *doc;    /* where its doc explains it, "docs/02-intersection.md, \"What you write\"" */
   int cases;          /* cases checked so far */
   int failed;         /* of which failed */
   const char *relies; /* earlier steps' functions the test also runs, or NULL */
