@@ -110,19 +110,31 @@ static void step_args(char *out, size_t size)
               "digits, spaces, '.', '=', '_', '-')", *c);
 }
 
-/* Render the step's default scene at w x h to `path` (.pfm or .png). */
+/* Render the step's default scene at w x h to `path` (.pfm or .png). What the
+ * program says on stderr (such as "ignoring the lights") is shown only when
+ * it fails. */
 static void render(int w, int h, const char *path)
 {
-  char args[256], cmd[768];
+  char args[256], cmd[1024], said[512] = "";
+  const char *err_path = OUT_DIR "/" STEP_NAME "-stderr.txt";
   step_args(args, sizeof args);
   mkdir(OUT_DIR, 0755);
   remove(path);
   snprintf(cmd, sizeof cmd, "%s/bin/%s --width %d --height %d --threads 2 --quiet %s -o %s",
            BUILD_DIR, STEP_NAME, w, h, args, path);
-  int status = system(cmd);
-  cr_assert(WIFEXITED(status) && WEXITSTATUS(status) == 0,
-            "the step's program failed: '%s' (exit status %d)\n  read %s, \"What you write\"",
-            cmd, WIFEXITED(status) ? WEXITSTATUS(status) : -1, STEP_CODE[step_index()].doc);
+  char run[1200];
+  snprintf(run, sizeof run, "%s 2> %s", cmd, err_path);
+  int status = system(run);
+  bool ok = WIFEXITED(status) && WEXITSTATUS(status) == 0;
+  FILE *f = ok ? NULL : fopen(err_path, "r");
+  if (f) {
+    size_t n = fread(said, 1, sizeof said - 1, f);
+    said[n] = 0;
+    fclose(f);
+  }
+  cr_assert(ok, "the step's program failed: '%s' (exit status %d)%s%s\n  read %s, \"What you "
+            "write\"", cmd, WIFEXITED(status) ? WEXITSTATUS(status) : -1,
+            said[0] ? "; it said:\n" : "", said, STEP_CODE[step_index()].doc);
 }
 
 /* The reference image's size. */
