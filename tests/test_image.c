@@ -94,17 +94,20 @@ Test(image, png_of_the_f_is_upright_in_the_file_and_reads_back)
                  b[0], b[1], b[2], got[0], got[1], got[2]);
     }
   CHECK_DONE(&c);
-  stbi_image_free(px);
 
-  /* image_load gives the film's rows back, bottom first. */
+  /* image_load gives the file's bytes / 255 back, rows bottom first. */
   float *back;
   REQUIRE(image_load(path, &w, &h, &back), "cannot read %s back", path);
   REQUIRE(w == F_W && h == F_H, "%s read back as %d x %d, not 5 x 7", path, w, h);
   Check l = CHECK("image_load", FILES);
-  for (int k = 0; k < F_W * F_H * 3; k++)
-    CHECK_NEAR(&l, rgb[k], back[k], 0.0, "the F picture's PNG read back: float %d "
-               "(pixel %d, %d from the bottom left)", k, (k / 3) % F_W, (k / 3) / F_W);
+  for (int k = 0; k < F_W * F_H * 3; k++) {
+    int i = (k / 3) % F_W, j = (k / 3) / F_W;
+    float want = px[((F_H - 1 - j) * F_W + i) * 3 + k % 3] / 255.0f;
+    CHECK_NEAR(&l, want, back[k], 0.0, "the F picture's PNG read back: float %d (pixel %d, %d "
+               "from the bottom left), the file's byte / 255", k, i, j);
+  }
   CHECK_DONE(&l);
+  stbi_image_free(px);
   free(back);
 }
 
@@ -351,9 +354,11 @@ Test(image, unknown_extension_is_rejected_and_writes_nothing)
 Test(image, failed_write_leaves_the_existing_file_untouched)
 {
   /* An existing file, then a file-size limit of 1000 bytes (SIGXFSZ ignored,
-   * so writes fail with EFBIG) and a 64 x 64 picture that cannot fit: the
-   * write fails half way, the old file must be byte for byte the same and no
-   * temporary file may be left. (Criterion runs each test in its own process.) */
+   * so writes fail with EFBIG) and a 1024 x 1024 picture that cannot fit
+   * whatever bytes film_to_byte gives (deflate shrinks at most about 1000
+   * times): the write fails half way, the old file must be byte for byte the
+   * same and no temporary file may be left. (Criterion runs each test in its
+   * own process.) */
   const char *dir = OUT_DIR "/atomic";
   mkdir(OUT_DIR, 0755);
   mkdir(dir, 0755);
@@ -364,9 +369,10 @@ Test(image, failed_write_leaves_the_existing_file_untouched)
     REQUIRE(f && fwrite(old, 1, sizeof old - 1, f) == sizeof old - 1 && fclose(f) == 0,
             "cannot write %s", paths[k]);
   }
-  static float rgb[64 * 64 * 3];
+  enum { SIDE = 1024 };
+  static float rgb[SIDE * SIDE * 3];
   uint32_t x = 12345;
-  for (int k = 0; k < 64 * 64 * 3; k++) { /* noise (an LCG): PNG cannot shrink it */
+  for (int k = 0; k < SIDE * SIDE * 3; k++) { /* noise (an LCG) */
     x = x * 1664525u + 1013904223u;
     rgb[k] = (float)(x >> 24) / 255.0f;
   }
@@ -376,7 +382,7 @@ Test(image, failed_write_leaves_the_existing_file_untouched)
   cr_redirect_stderr();
   Check c = CHECK("image_save", FILES);
   for (int k = 0; k < 2; k++) {
-    CHECK_INT(&c, 0, image_save(paths[k], 64, 64, rgb, TONEMAP_CLAMP),
+    CHECK_INT(&c, 0, image_save(paths[k], SIDE, SIDE, rgb, TONEMAP_CLAMP),
               "%s over a 1000-byte file-size limit: the result (false)", paths[k]);
     char buf[256];
     long n = slurp(paths[k], buf, sizeof buf);
