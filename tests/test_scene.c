@@ -7,7 +7,7 @@
 
 /* scene_intersect and scene_occluded are given code: they call the shapes'
  * functions, so a failure here is a failure of those. */
-#define SHAPES "sphere_hit_t, plane_hit_t, their _fill (through scene_intersect)"
+#define SHAPES "sphere_hit_t, sphere_hit_fill, plane_hit_t, plane_hit_fill (through scene_intersect)"
 #define SPHERES "sphere_hit_t, sphere_hit_fill (through scene_intersect)"
 #define DOC "docs/02-intersection.md, \"What you write\""
 

@@ -251,10 +251,10 @@ static void check_not_self_shadowed(Scene *s, vec3s centre, float size, const ch
       continue;
     lit++;
     grazing += n_dot_l < 0.02f;
-    CHECK_THAT(&c, !vec_is_zero(li), "%s of size %g at (%g, %g, %g): a point on its lit side "
-               "(n.l = %.3g) shadowed by its own surface (shadow acne) at p = (%.9g, %.9g, "
-               "%.9g), p_err = %.3g", what, size, centre.x, centre.y, centre.z, n_dot_l,
-               h.p.x, h.p.y, h.p.z, h.p_err);
+    CHECK_THAT(&c, !vec_is_zero(li), "%s of size %g at (%g, %g, %g), a point on its lit side "
+               "(n.l = %.3g) at p = (%.9g, %.9g, %.9g), p_err = %.3g: shadowed by its own "
+               "surface (shadow acne)\n  expected lit\n  got      blocked", what, size,
+               centre.x, centre.y, centre.z, n_dot_l, h.p.x, h.p.y, h.p.z, h.p_err);
   }
   CHECK_DONE(&c);
   cr_assert(lit > 3000 && grazing > 20, "%s: the test's own rays found only %d lit points, "
