@@ -286,7 +286,33 @@ static void scaled_scene(const Scene *base, double s, double T, bool far, char *
   cr_assert(parser_load_file(scene, sc), "cannot load the test's own scene %s", scene);
 }
 
-/* The precondition of test 4: step 04's render of the unscaled scene matches
+/* The first precondition of test 4: the scaled scenes are seen from up to
+ * 10^4 radii (the far camera); their hit points come from sphere_hit_t, so
+ * its distance must be right there before acne means anything. Central rays
+ * at 1.1 .. 10^5 radii against the long-double root (16 ulps: test 1 asks 4). */
+static void require_precise_sphere(void)
+{
+  Check c = CHECK("sphere_hit_t", "docs/02-intersection.md, \"What you write\"");
+  for (int k = 0; k < 400; k++) {
+    Rng g = rng_make(40, 0, (uint32_t)k);
+    double ratio = stress_log10u(&g, log10(1.1), 5.0);
+    Sphere s = {.center = glms_vec3_scale(stress_unit(&g), (float)stress_log10u(&g, -2.0, 2.0)),
+                .radius = (float)stress_log10u(&g, -2.0, 2.0)};
+    vec3s u = stress_unit(&g);
+    vec3s o = glms_vec3_add(s.center, glms_vec3_scale(u, (float)(ratio * s.radius)));
+    L3 d = unit(sub(l3(s.center), l3(o)));
+    Ray r = {.o = o, .d = vec_make((float)d.x, (float)d.y, (float)d.z)};
+    LD clear, want = ref_sphere(&s, l3(r.o), l3(r.d), INFINITY, &clear);
+    float t = sphere_hit_t(&s, r, INFINITY);
+    double ulps = fabs((double)(t - want)) / stress_ulp((double)want);
+    CHECK_REQUIRE(&c, ulps <= 16.0, "a central ray toward a sphere %.3g radii away is off by "
+                  "%.3g ulps (t = %.9g, exact %.9Lg): the scaled scenes of this test are seen "
+                  "from up to 10^4 radii, so it cannot tell acne from a wrong distance; "
+                  "stress test 1 says which refinement is missing", ratio, ulps, t, want);
+  }
+}
+
+/* The second precondition of test 4: step 04's render of the unscaled scene matches
  * the long-double reference without shadows. Acne is only acne when the
  * camera, the intersections and Phong are right. */
 static void require_plain_render(const Scene *base, float *lo, float *hi, bool *amb)
@@ -319,6 +345,7 @@ Test(stress, t4_no_acne_and_no_leak_at_any_scale, .timeout = 600)
   float *lo = malloc(sizeof(float) * 3 * W * H), *hi = malloc(sizeof(float) * 3 * W * H);
   bool *amb = malloc(sizeof(bool) * W * H);
   cr_assert(lo && hi && amb, "out of memory");
+  require_precise_sphere();
   require_plain_render(&base, lo, hi, amb);
   stress_table("t4_shadows", "Test 4: pixels with shadow acne (darker than the reference) / "
                "light leaks (brighter), step 05 against a long-double reference, 160x120; "
@@ -327,8 +354,9 @@ Test(stress, t4_no_acne_and_no_leak_at_any_scale, .timeout = 600)
                "fixed-eps acne | fixed-eps leak |\n|---|---|---|---|---|---|---|---|");
   Check c = CHECK_RELYING("ray_spawn, shade_visible",
                           "docs/05-shadows.md, \"Self-intersection: where the shadow ray starts\"",
-                          "light_incident, shade_phong_light (step 04), checked above at "
-                          "scale 1 without shadows");
+                          "camera_ray, sphere_hit_t (checked above at 1.1 .. 10^5 radii), "
+                          "light_incident, shade_phong_light (checked above at scale 1 "
+                          "without shadows)");
   long bad = 0;
   for (int e = -4; e <= 5; e++) {
     for (int tr = 0; tr < 2; tr++) {
