@@ -302,7 +302,7 @@ static void require_precise_sphere(void)
     vec3s o = glms_vec3_add(s.center, glms_vec3_scale(u, (float)(ratio * s.radius)));
     L3 d = unit(sub(l3(s.center), l3(o)));
     Ray r = {.o = o, .d = vec_make((float)d.x, (float)d.y, (float)d.z)};
-    LD clear, want = ref_sphere(&s, l3(r.o), l3(r.d), INFINITY, &clear);
+    LD clear, want = ref_sphere(&s, l3(r.o), unit(l3(r.d)), INFINITY, &clear);
     float t = sphere_hit_t(&s, r, INFINITY);
     double ulps = fabs((double)(t - want)) / stress_ulp((double)want);
     CHECK_REQUIRE(&c, ulps <= 16.0, "a central ray toward a sphere %.3g radii away is off by "
