@@ -127,13 +127,19 @@ static L3 ref_shade(const Scene *sc, int k, L3 p, L3 n, L3 eye, LD shift, bool *
  * passes within the float camera ray's error of the exact ray, or within the
  * float hit point's error of a shadow ray. `coord` bounds the coordinates of
  * the shapes and lights (not of the eye). */
+/* The exact camera ray's direction through film point (nx, ny). */
+static L3 ref_camera_dir(const Camera *cam, LD nx, LD ny)
+{
+  L3 w = unit(sub(l3(cam->eye), l3(cam->center)));
+  L3 u = unit(cross(l3(cam->up), w)), v = cross(w, u);
+  LD hh = tanl(0.5L * cam->fov_y_deg * 3.14159265358979323846264L / 180.0L), hw = hh * W / H;
+  return unit(add(add(mul(u, -hw + 2.0L * hw * nx), mul(v, -hh + 2.0L * hh * ny)), mul(w, -1.0L)));
+}
+
 static L3 ref_pixel(const Scene *sc, LD nx, LD ny, LD coord, bool *amb)
 {
   const Camera *cam = &sc->camera;
-  L3 eye = l3(cam->eye), w = unit(sub(eye, l3(cam->center)));
-  L3 u = unit(cross(l3(cam->up), w)), v = cross(w, u);
-  LD hh = tanl(0.5L * cam->fov_y_deg * 3.14159265358979323846264L / 180.0L), hw = hh * W / H;
-  L3 d = unit(add(add(mul(u, -hw + 2.0L * hw * nx), mul(v, -hh + 2.0L * hh * ny)), mul(w, -1.0L)));
+  L3 eye = l3(cam->eye), d = ref_camera_dir(cam, nx, ny);
   int best = -1;
   LD t = INFINITY;
   for (int k = 0; k < sc->n_shapes; k++) {
@@ -337,6 +343,23 @@ static void require_plain_render(const Scene *base, float *lo, float *hi, bool *
                 n.acne, n.leak);
 }
 
+/* The largest angle between camera_ray's directions and the exact ones, over
+ * a 5 x 5 grid of pixel centres. */
+static double camera_error(const Scene *sc)
+{
+  LD worst = 0.0L;
+  for (int j = 0; j < 5; j++)
+    for (int i = 0; i < 5; i++) {
+      LD nx = (32 * i + 16.5L) / W, ny = (24 * j + 12.5L) / H;
+      Ray r = camera_ray(&sc->camera, (float)nx, (float)ny);
+      L3 want = ref_camera_dir(&sc->camera, (float)nx, (float)ny), got = unit(l3(r.d));
+      L3 x = cross(want, got);
+      LD a = sqrtl(dot(x, x));
+      worst = isnan(a) || a > worst ? a : worst;
+    }
+  return (double)worst;
+}
+
 Test(stress, t4_no_acne_and_no_leak_at_any_scale, .timeout = 600)
 {
   Scene base;
@@ -354,9 +377,11 @@ Test(stress, t4_no_acne_and_no_leak_at_any_scale, .timeout = 600)
                "fixed-eps acne | fixed-eps leak |\n|---|---|---|---|---|---|---|---|");
   Check c = CHECK_RELYING("ray_spawn, shade_visible",
                           "docs/05-shadows.md, \"Self-intersection: where the shadow ray starts\"",
-                          "camera_ray, sphere_hit_t (checked above at 1.1 .. 10^5 radii), "
-                          "light_incident, shade_phong_light (checked above at scale 1 "
-                          "without shadows)");
+                          "camera_ray (checked for each scene), sphere_hit_t (checked at "
+                          "1.1 .. 10^5 radii), light_incident, shade_phong_light (checked "
+                          "at scale 1 without shadows)");
+  Check cam = CHECK("camera_ray", "docs/03-camera.md, \"What you write\"");
+  double cam_worst = 0.0;
   long bad = 0;
   for (int e = -4; e <= 5; e++) {
     for (int tr = 0; tr < 2; tr++) {
@@ -365,6 +390,20 @@ Test(stress, t4_no_acne_and_no_leak_at_any_scale, .timeout = 600)
         char scene[256], out[256], outeps[256];
         Scene sc;
         scaled_scene(&base, s, T, far, scene, sizeof scene, &sc);
+        /* Acne is only acne when the camera rays are right (CAM_ANGLE). */
+        double cam_err = camera_error(&sc);
+        cam_worst = fmax(cam_worst, cam_err);
+        CHECK_THAT(&cam, cam_err <= 2.0 * CAM_ANGLE, "step 05's scene scaled by %g, moved by "
+                   "%g, %s camera (the eye %.3g from the origin): camera rays are off by "
+                   "%.3g rad (at most %.3g asked): take the direction as V^-1 (p, 0), not "
+                   "V^-1 (p, 1) - V^-1 (0, 0, 0, 1), whose eye coordinates round away the "
+                   "direction's low bits far from the origin", s, T,
+                   far ? "a far, narrow" : "the usual", glms_vec3_norm(sc.camera.eye), cam_err,
+                   (double)(2.0L * CAM_ANGLE));
+        if (!(cam_err <= 2.0 * CAM_ANGLE)) {
+          scene_free(&sc);
+          continue;
+        }
         snprintf(out, sizeof out, STRESS_DIR "/t4_%+d_%d_%d.pfm", e, tr, far);
         snprintf(outeps, sizeof outeps, STRESS_DIR "/t4_%+d_%d_%d_eps.pfm", e, tr, far);
         /* Coordinates up to `coord` (eye included); a float camera ray's
@@ -397,8 +436,10 @@ Test(stress, t4_no_acne_and_no_leak_at_any_scale, .timeout = 600)
       }
     }
   }
+  CHECK_DONE(&cam);
   CHECK_DONE(&c);
   free(lo), free(hi), free(amb);
   scene_free(&base);
-  cr_log_info("test 4: %ld acne or leak pixels over all scales", bad);
+  cr_log_info("test 4: %ld acne or leak pixels over all scales; camera rays within %.3g rad",
+              bad, cam_worst);
 }
