@@ -13,14 +13,14 @@
 /* The refinement a sphere_hit_t off by `ulps` at `ratio` radii is missing:
  * the textbook discriminant when it answers as the textbook does, or when it
  * is off by more than the robust formula with b and c in float ever is (8.2
- * ulps, docs/accuracy.md test 1); past 10^6 radii the second Gram-Schmidt
- * pass; else b and c in double. */
+ * ulps, docs/accuracy.md test 1: 10 leaves a margin); past 10^6 radii the
+ * second Gram-Schmidt pass; else b and c in double. */
 static const char *distance_refinement(double ratio, double ulps, bool as_textbook)
 {
   if (ratio >= 1e6 && !as_textbook)
     return "take the perpendicular f + b d a second time (Gram-Schmidt), so that what "
            "rounding left along d does not reach r";
-  if (as_textbook || ulps > 16.0)
+  if (as_textbook || ulps > 10.0)
     return "form the discriminant as r^2 - |f + b d|^2, not b^2 - c (it cancels for far "
            "spheres), and the near root as c / q, q = b + sign(b) sqrt(disc)";
   return "form b = -f.d and c = f.f - r^2 in double from the exact o - c, rounded once "
