@@ -37,7 +37,7 @@ static void load(Scene *s, const char *text, unsigned features)
 {
   scene_init(s);
   cr_assert(parser_load_string("test", text, s), "scene text rejected:\n%s", text);
-  cr_assert(scene_prepare(s, features));
+  cr_assert(scene_prepare(s, features), "out of memory");
 }
 
 Test(ambient, alone_is_m_amb_times_l_amb)

@@ -11,7 +11,7 @@
 Test(film, sample_is_the_pixel_centre_over_the_film_size)
 {
   Film f;
-  cr_assert(film_init(&f, 4, 2));
+  cr_assert(film_init(&f, 4, 2), "film_init (given code): out of memory");
   /* ((i + 0.5) / w, (j + 0.5) / h): all exact in binary. */
   const struct {
     int i, j;
@@ -31,7 +31,7 @@ Test(film, sample_is_the_pixel_centre_over_the_film_size)
 Test(film, sample_of_an_odd_size_is_within_an_ulp)
 {
   Film f;
-  cr_assert(film_init(&f, 3, 7));
+  cr_assert(film_init(&f, 3, 7), "film_init (given code): out of memory");
   /* (i + 0.5) / w: one division of exact values, so within half an ulp of the
    * exact fraction; 1 ulp leaves the order of operations free. */
   Check c = CHECK("film_sample", DOC);
@@ -50,7 +50,7 @@ Test(film, sample_of_an_odd_size_is_within_an_ulp)
 Test(film, starts_black_and_stores_rows_from_the_bottom)
 {
   Film f;
-  cr_assert(film_init(&f, 5, 3));
+  cr_assert(film_init(&f, 5, 3), "film_init (given code): out of memory");
   Check c = CHECK("film_init", "docs/01-film.md, \"The math\"");
   for (int k = 0; k < 5 * 3 * 3; k++)
     CHECK_NEAR(&c, 0.0, f.rgb[k], 0.0, "a new 5 x 3 film: float %d is black", k);

@@ -162,10 +162,10 @@ typedef struct Setup {
 static void setup(Setup *s, Material m, const Light *lights, int n_lights)
 {
   scene_init(&s->scene);
-  cr_assert(scene_add_material(&s->scene, &m));
+  cr_assert(scene_add_material(&s->scene, &m), "out of memory");
   for (int k = 0; k < n_lights; k++)
-    cr_assert(scene_add_light(&s->scene, &lights[k]));
-  cr_assert(scene_prepare(&s->scene, SCENE_CAMERA | SCENE_LIGHTS));
+    cr_assert(scene_add_light(&s->scene, &lights[k]), "out of memory");
+  cr_assert(scene_prepare(&s->scene, SCENE_CAMERA | SCENE_LIGHTS), "out of memory");
   s->inst = (Instance){.shape = SHAPE_PLANE, .material = 0, .light = -1,
                        .plane = plane_make(vec_make(0, 0, 0), vec_make(0, 1, 0))};
   s->hit = floor_hit(&s->inst);

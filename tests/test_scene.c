@@ -34,7 +34,7 @@ static void build(Scene *s)
   cr_assert(scene_add_material(s, &m0) && scene_add_material(s, &m1), "out of memory");
   Instance floor = {.shape = SHAPE_PLANE, .material = 0, .light = -1,
                     .plane = plane_make(vec_make(0, 0, 0), vec_make(0, 1, 0))};
-  cr_assert(scene_add_instance(s, &floor));
+  cr_assert(scene_add_instance(s, &floor), "out of memory");
   add_sphere(s, 0, 1, -10, 2, 1);
   add_sphere(s, 0, 1, -9, 1, 1);
   add_sphere(s, 0, 1, -12, 3, 1);
@@ -44,7 +44,7 @@ Test(scene, closest_hit_among_overlapping_spheres)
 {
   Scene s;
   build(&s);
-  cr_assert(scene_prepare(&s, SCENE_CAMERA | SCENE_LIGHTS));
+  cr_assert(scene_prepare(&s, SCENE_CAMERA | SCENE_LIGHTS), "out of memory");
   /* From (0, 1, 0) along -z: fronts at z = -8 (r 2), -8 (r 1), -9 (r 3):
    * t = 8 (the first two touch there); the r 3 sphere's front is farther. */
   Hit h;
@@ -70,7 +70,7 @@ Test(scene, the_floor_is_closer_than_the_spheres_behind_it)
 {
   Scene s;
   build(&s);
-  cr_assert(scene_prepare(&s, SCENE_CAMERA | SCENE_LIGHTS));
+  cr_assert(scene_prepare(&s, SCENE_CAMERA | SCENE_LIGHTS), "out of memory");
   /* From (0, 1, 0) toward (0, 0, -4): meets y = 0 at t = sqrt(17) before
    * any sphere (their lowest points are at z <= -8). */
   Hit h;
@@ -104,11 +104,11 @@ Test(scene, closest_hit_among_many_spheres_matches_brute_force)
   Scene s;
   scene_init(&s);
   Material m = {.name = "m"};
-  cr_assert(scene_add_material(&s, &m));
+  cr_assert(scene_add_material(&s, &m), "out of memory");
   for (int k = 0; k < 400; k++)
     add_sphere(&s, (float)(k % 20) - 9.5f, (float)(k / 20) - 9.5f, -10.0f - (float)(k % 7),
                0.3f + 0.05f * (float)(k % 5), 0);
-  cr_assert(scene_prepare(&s, SCENE_CAMERA | SCENE_LIGHTS));
+  cr_assert(scene_prepare(&s, SCENE_CAMERA | SCENE_LIGHTS), "out of memory");
   Check ck = CHECK(SPHERES, DOC);
   int decided = 0;
   for (int q = 0; q < 400; q++) {
@@ -154,7 +154,7 @@ Test(scene, occluded_only_before_tmax)
 {
   Scene s;
   build(&s);
-  cr_assert(scene_prepare(&s, SCENE_CAMERA | SCENE_LIGHTS));
+  cr_assert(scene_prepare(&s, SCENE_CAMERA | SCENE_LIGHTS), "out of memory");
   Ray r = ray(0, 1, 0, 0, 0, -1); /* first occluder at t = 8 */
   Check c = CHECK("sphere_hit_t, plane_hit_t (through scene_occluded)", DOC);
   CHECK_INT(&c, 1, scene_occluded(&s, r, 100.0f), "ray along -z, sphere at t = 8, tmax 100: "
@@ -177,15 +177,15 @@ Test(scene, light_shapes_are_seen_but_never_occlude)
   Scene s;
   scene_init(&s);
   Material m = {.name = "m"};
-  cr_assert(scene_add_material(&s, &m));
+  cr_assert(scene_add_material(&s, &m), "out of memory");
   add_sphere(&s, 0, 0, -20, 1, 0);
   Light point = {.type = LIGHT_POINT, .position = vec_make(0, 0, -5), .radius = 0.5f,
                  .power = vec_make(1, 1, 1)};
   Light area = {.type = LIGHT_AREA, .power = vec_make(1, 1, 1),
                 .quad = quad_make(vec_make(-1, 2, -11), vec_make(2, 0, 0), vec_make(0, 0, 2))};
-  cr_assert(scene_add_light(&s, &point) && scene_add_light(&s, &area));
+  cr_assert(scene_add_light(&s, &point) && scene_add_light(&s, &area), "out of memory");
   cr_assert(scene_prepare(&s, SCENE_CAMERA | SCENE_LIGHTS | SCENE_LIGHT_SHAPES |
-                                  SCENE_AREA_LIGHTS));
+                                  SCENE_AREA_LIGHTS), "out of memory");
   /* The camera sees the light's sphere (front at z = -4.5). */
   Hit h;
   Check c = CHECK(SPHERES, DOC);
