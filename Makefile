@@ -23,12 +23,12 @@ SCENE_07-antialiasing := scenes/antialiasing.scene
 SCENE_08-area-lights  := scenes/area-lights.scene
 
 # Each step's unit tests: tests/test_<name>.c (make test-step N runs them).
-TESTS_01-film           := film image
+TESTS_01-film           := film export image
 TESTS_02-intersection   := ray sphere plane scene
 TESTS_03-camera         := camera parser cli
 TESTS_04-phong          := light phong
 # Steps 05-08 carry step 04's Phong region in their shade.c: they run its tests too.
-TESTS_05-shadows        := shadows phong
+TESTS_05-shadows        := shadows shadows_lecture phong
 TESTS_06-ambient        := ambient phong
 TESTS_07-antialiasing   := sampler antialiasing phong
 TESTS_08-area-lights    := area_light phong
