@@ -205,9 +205,10 @@ static void check_not_self_shadowed(Scene *s, vec3s centre, float size, const ch
                centre.x, centre.y, centre.z, n_dot_l, h.p.x, h.p.y, h.p.z, h.p_err);
   }
   CHECK_DONE(&c);
-  cr_assert(lit > 3000 && grazing > 20, "%s: the test's own rays found only %d lit points, "
-            "%d grazing (sphere_hit_t or plane_hit_t, step 02, may be wrong)", what, lit,
-            grazing);
+  Check hits = CHECK("sphere_hit_t, plane_hit_t", "docs/02-intersection.md, \"What you write\"");
+  CHECK_REQUIRE(&hits, lit > 3000 && grazing > 20, "20000 rays at a %s found only %d lit points "
+                "(%d grazing) where most should hit it: fix `make test-step 2` first", what,
+                lit, grazing);
 }
 
 Test(shadows, sphere_lit_from_outside_is_not_self_shadowed)
@@ -316,17 +317,15 @@ Test(saving, no_shadow_ray_behind_the_surface)
   add_point(&s, vec_make(0.0f, -4.0f, 0.0f), vec_make(1.0f, 1.0f, 1.0f));          /* below */
   add_point(&s, vec_make(4.0f, 0.0f, 0.0f), vec_make(1.0f, 1.0f, 1.0f));           /* n.l = 0 */
   add_directional(&s, vec_make(0.0f, 1.0f, 0.0f), vec_make(1.0f, 1.0f, 1.0f));     /* upward */
-  add_point(&s, vec_make(0.0f, 4.0f, 0.0f), vec_make(1.0f, 1.0f, 1.0f));           /* above */
   prepare(&s);
   Hit h = floor_hit(&s, 0.0f, 0.0f);
   const char *what[] = {"a point light below the surface", "a point light in its tangent plane "
-                        "(n.l = 0)", "a directional light shining upward", "a point light above"};
-  const int want[] = {0, 0, 0, 1};
+                        "(n.l = 0)", "a directional light shining upward"};
   Check c = CHECK("shade_incident, shade_visible", "docs/05-shadows.md, \"What you write\"");
-  for (int k = 0; k < 4; k++) {
+  for (int k = 0; k < 3; k++) {
     uint64_t rays;
     incident(&s, k, &h, &rays);
-    CHECK_INT(&c, want[k], rays, "floor point, %s: shadow rays traced (ctx->rays)", what[k]);
+    CHECK_INT(&c, 0, rays, "floor point, %s: shadow rays traced (ctx->rays)", what[k]);
   }
   scene_free(&s);
 }
