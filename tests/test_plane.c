@@ -65,8 +65,8 @@ Test(plane, axis_aligned_hit_lies_exactly_on_the_plane)
   for (int k = 1; k < 50; k++) {
     Ray r = ray(0.3f * (float)k, 7.77f, -1.1f * (float)k, 0.17f * (float)k, -1.0f, 0.29f);
     float t = plane_hit_t(&p, r, INFINITY);
-    CHECK_THAT(&ct, isfinite(t), "oblique ray %d from y = 7.77 down to the plane y = 0.1: "
-               "a hit expected, got t = %.9g", k, t);
+    CHECK_THAT(&ct, isfinite(t), "oblique ray %d from y = 7.77 down to the plane y = 0.1: t"
+               "\n  expected a hit (t finite)\n  got      %.9g", k, t);
     if (!isfinite(t))
       continue;
     Hit h;
@@ -87,7 +87,8 @@ Test(plane, tilted_hit_is_on_the_plane_within_its_error_bound)
   Check ct = CHECK("plane_hit_t", DOC), f = CHECK("plane_hit_fill", DOC);
   float t = plane_hit_t(&p, r, INFINITY);
   CHECK_REQUIRE(&ct, isfinite(t), "ray from (10, 10, 10) toward the tilted plane through "
-                "(1, 2, 3), normal (1, 1, 0.5): a hit expected, got t = %.9g", t);
+                "(1, 2, 3), normal (1, 1, 0.5): t\n  expected a hit (t finite)\n  got      %.9g",
+                t);
   Hit h;
   plane_hit_fill(&p, r, t, &h);
   /* Signed distance of p to the plane, long double, normal (1, 1, 0.5)/1.5. */
