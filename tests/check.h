@@ -33,7 +33,7 @@
 
 #include "vec.h"
 
-enum { CHECK_SHOWN = 3, CHECK_TEXT = 768 };
+enum { CHECK_SHOWN = 3, CHECK_TEXT = 4096 };
 
 typedef struct Check {
   const char *fn;     /* the function under test, "sphere_hit_t" */
