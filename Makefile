@@ -23,14 +23,15 @@ SCENE_07-antialiasing := scenes/antialiasing.scene
 SCENE_08-area-lights  := scenes/area-lights.scene
 
 # Each step's unit tests: tests/test_<name>.c (make test-step N runs them).
-TESTS_01-film           := film image
+TESTS_01-film           := film export image
 TESTS_02-intersection   := ray sphere plane scene
 TESTS_03-camera         := camera parser cli
 TESTS_04-phong          := light phong
-TESTS_05-shadows        := shadows
-TESTS_06-ambient        := ambient
-TESTS_07-antialiasing   := sampler antialiasing
-TESTS_08-area-lights    := area_light
+# Steps 05-08 carry step 04's Phong region in their shade.c: they run its tests too.
+TESTS_05-shadows        := shadows shadows_lecture phong
+TESTS_06-ambient        := ambient phong
+TESTS_07-antialiasing   := sampler antialiasing phong
+TESTS_08-area-lights    := area_light phong
 STRESS_TESTS := $(patsubst tests/%.c,%,$(wildcard tests/stress_*.c))
 
 # ---------------------------------------------------------------- flags
@@ -167,11 +168,11 @@ $(BUILD)/tests/stress: $(STRESS_OBJ) $(LIBCOMMON)
 	@$(CC) $(CFLAGS) $(LDFLAGS) $^ $(LDLIBS) -lcriterion -lmpfr -lgmp -o $@
 STRESSBIN := $(if $(STRESS_TESTS),$(BUILD)/tests/stress)
 
-test: $(TESTBIN) $(STRESSBIN) $(BUILD)/bin/05-shadows $(BUILD)/bin/mistakes
+test: $(TESTBIN) $(STRESSBIN) $(BUILD)/bin/04-phong $(BUILD)/bin/05-shadows $(BUILD)/bin/mistakes
 	@tests/run.sh $(TESTBIN) $(STRESSBIN)
 
-# The stress tests render through step 05 and tools/mistakes.c (docs/accuracy.md).
-stress: $(STRESSBIN) $(BUILD)/bin/05-shadows $(BUILD)/bin/mistakes
+# The stress tests render through steps 04, 05 and tools/mistakes.c (docs/accuracy.md).
+stress: $(STRESSBIN) $(BUILD)/bin/04-phong $(BUILD)/bin/05-shadows $(BUILD)/bin/mistakes
 	@tests/run.sh --verbose $(STRESSBIN)
 
 # make test-step N  (or N=3): one step's unit tests and image test.
@@ -194,13 +195,15 @@ sanitize:
 	$(MAKE) BUILD=build/san SAN=1 OPT=-O1 test
 
 # ---------------------------------------------------------------- images, diffs
-# Reference images: each step's default scene at the reference size. Only on
-# purpose: they are what the image tests compare against.
+# Reference images: each step's default scene at the reference size, with the
+# extra options of images/NN-name.args if any (the image test uses the same).
+# Only on purpose: they are what the image tests compare against.
 IMG_SIZE := --width 320 --height 240
 images: $(BINS)
 	@for s in $(PRESENT); do \
 	  if [ $$s = 01-film ]; then size=""; else size="$(IMG_SIZE)"; fi; \
-	  $(BUILD)/bin/$$s $$size --threads 2 -o images/$$s.png || exit 1; done
+	  args=$$(cat images/$$s.args 2>/dev/null); \
+	  $(BUILD)/bin/$$s $$size $$args --threads 2 -o images/$$s.png || exit 1; done
 
 # The pictures of shadow and ambient mistakes in docs/05-shadows.md and
 # docs/06-ambient.md: tools/mistakes.c renders them (on purpose only).

@@ -3,10 +3,10 @@
  * sphere_hit_t / plane_hit_t distance; any-hit = some lit shape at t < tmax.
  * The reference is that loop written out here, over random scenes and rays
  * (grazing ones included), for the flat layout and the hierarchy. */
-#include <criterion/criterion.h>
 #include <stdlib.h>
 
 #include "accel/accel.h"
+#include "check.h"
 #include "rng.h"
 
 static float uni(Rng *g, float lo, float hi) { return lo + (hi - lo) * rng_float(g); }
@@ -16,20 +16,20 @@ static void random_scene(Scene *s, Rng *g, int n)
 {
   scene_init(s);
   Material m = {.name = "m", .diffuse = vec_make(0.5f, 0.5f, 0.5f)};
-  cr_assert(scene_add_material(s, &m));
+  cr_assert(scene_add_material(s, &m), "out of memory");
   Instance pl = {.shape = SHAPE_PLANE, .plane = plane_make(vec_make(0, 0, 0), vec_make(0, 1, 0)),
                  .light = -1};
-  cr_assert(scene_add_instance(s, &pl));
+  cr_assert(scene_add_instance(s, &pl), "out of memory");
   for (int k = 0; k < n; k++) {
     Instance in = {.shape = SHAPE_SPHERE, .light = -1};
     in.sphere.center = vec_make(uni(g, -10, 10), uni(g, 0, 5), uni(g, -10, 10));
     in.sphere.radius = k % 7 == 0 ? 1e-3f : uni(g, 0.05f, 1.5f);
     if (k % 11 == 5) /* a duplicate of the previous sphere: equal distances */
       in.sphere = s->instances[s->n_instances - 1].sphere;
-    cr_assert(scene_add_instance(s, &in));
+    cr_assert(scene_add_instance(s, &in), "out of memory");
   }
-  cr_assert(scene_prepare(s, SCENE_CAMERA | SCENE_LIGHTS));
-  cr_assert(accel_build(s));
+  cr_assert(scene_prepare(s, SCENE_CAMERA | SCENE_LIGHTS), "out of memory");
+  cr_assert(accel_build(s), "accel_build (given code) failed");
 }
 
 static Ray random_ray(const Scene *s, Rng *g)
@@ -52,7 +52,9 @@ static void check_layout(const char *layout, int n)
   Rng g = rng_make(7, (uint32_t)n, 0);
   Scene s;
   random_scene(&s, &g, n);
-  cr_assert_not_null(s.index);
+  cr_assert(s.index, "accel_build (given code) built no index");
+  Check c = CHECK("scene index (given code: common/accel/)",
+                  "docs/performance.md, \"The scene queries (common/accel.c, common/bvh.c)\"");
   for (int k = 0; k < 20000; k++) {
     Ray r = random_ray(&s, &g);
     float tmax = k % 3 ? INFINITY : uni(&g, 0.1f, 20);
@@ -66,10 +68,15 @@ static void check_layout(const char *layout, int n)
       }
     }
     const Instance *hit = s.index->closest(&s, r, &got);
-    cr_assert_eq(hit ? (int)(hit - s.instances) : -1, want, "%s, n = %d, ray %d", layout, n, k);
-    cr_assert(want < 0 || got == best, "%s: t %a, expected %a", layout, got, best);
-    cr_assert_eq(s.index->any(&s, r, tmax), want >= 0, "%s, n = %d, ray %d", layout, n, k);
+    CHECK_INT(&c, want, hit ? (int)(hit - s.instances) : -1, "%s layout, %d spheres, ray %d: "
+              "the closest instance (-1: none), as the loop over scene_instance_hit_t says",
+              layout, n, k);
+    if (want >= 0)
+      CHECK_NEAR(&c, best, got, 0.0, "%s layout, %d spheres, ray %d: the closest t", layout, n, k);
+    CHECK_INT(&c, want >= 0, s.index->any(&s, r, tmax), "%s layout, %d spheres, ray %d: any "
+              "hit before tmax", layout, n, k);
   }
+  CHECK_DONE(&c);
   scene_free(&s);
   unsetenv("RT_ACCEL");
 }

@@ -1,7 +1,7 @@
 /* Stress tests 6-8 of docs/accuracy.md: the camera basis when up nearly
  * equals the view direction, long sums in the film, the random number
  * generator's range and the sRGB round trip; references in long double. */
-#include <criterion/criterion.h>
+#include "check.h"
 
 #include "camera.h"
 #include "film.h"
@@ -54,6 +54,9 @@ Test(stress, t6_camera_basis_orthonormal_when_up_is_almost_the_view_direction)
   const double angles[] = {1e-6, 1e-7, 1e-9, 0.0};
   const char *labels[] = {"1e-6", "1e-7", "1e-9", "0 (exactly parallel: fallback)"};
   double worst = 0.0;
+  Check ck = CHECK("camera_init", "docs/03-camera.md, \"What you write\"");
+  Check rk = CHECK_RELYING("camera_ray", "docs/03-camera.md, \"What you write\"",
+                           "camera_init (its basis)");
   for (int a = 0; a < 4; a++) {
     double w_orth = 0.0, w_dir = 0.0, w_txt = 0.0;
     for (int k = 0; k < 5000; k++) {
@@ -75,13 +78,22 @@ Test(stress, t6_camera_basis_orthonormal_when_up_is_almost_the_view_direction)
       w_dir = fmax(w_dir, (double)fmaxl(fabsl(cam.w.x - dx / n),
                                         fmaxl(fabsl(cam.w.y - dy / n), fabsl(cam.w.z - dz / n))));
       Ray r = camera_ray(&cam, rng_float(&g), rng_float(&g));
-      cr_expect(vec_is_finite(r.d) && vec_is_finite(r.o), "camera ray not finite");
+      CHECK_THAT(&rk, vec_is_finite(r.d) && vec_is_finite(r.o), "camera %d with up %s rad "
+                 "from the view direction: the ray is not finite, d = (%g, %g, %g)", k,
+                 labels[a], r.d.x, r.d.y, r.d.z);
     }
     stress_row("t6_camera", "| %s | 5000 | %.2e | %.2e | %.2e |", labels[a], w_txt, w_orth, w_dir);
     worst = fmax(worst, fmax(w_orth, w_dir));
+    CHECK_THAT(&ck, w_orth <= 1e-6 && w_dir <= 1e-6, "5000 cameras with up %s rad from the "
+               "view direction: the basis is off by %.2e (orthonormality) and %.2e (w against "
+               "the exact view direction); at most 1e-6 asked: compute u = normalize(up x w) "
+               "and v = w x u in double (a float cross product of nearly parallel vectors "
+               "keeps few bits), and when up is parallel take the world axis least aligned "
+               "with w", labels[a], w_orth, w_dir);
   }
+  CHECK_DONE(&ck);
+  CHECK_DONE(&rk);
   cr_log_info("test 6: worst camera basis error %.2e", worst);
-  cr_expect(worst <= 1e-6, "camera basis off by %.2e", worst);
 }
 
 /* Exact mean of n copies of the floats produced by `next` (long double sum:
@@ -114,7 +126,8 @@ Test(stress, t7_film_average_of_2_24_and_more_samples_within_1e_6)
     }
   }
   cr_log_info("test 7: worst relative error of the mean %.2e", worst);
-  cr_expect(worst <= 1e-6, "film mean off by %.2e relative", worst);
+  Check c = CHECK("film_accum_mean (given code)", "docs/07-antialiasing.md, \"The math\"");
+  CHECK_NEAR(&c, 0.0, worst, 1e-6, "mean of 2^24 .. 3 x 2^24 samples: worst relative error");
 }
 
 /* Inverse of splitmix64's finalizer rng_mix (xorshifts and odd multipliers
@@ -143,11 +156,13 @@ Test(stress, t8_rng_never_returns_one_and_srgb_round_trips_all_codes)
   y = unxorshift(y, 27);
   y *= inverse_odd(0xbf58476d1ce4e5b9ull);
   y = unxorshift(y, 30);
-  cr_assert(rng_mix(y) == ~0ull, "inverse of rng_mix is wrong");
+  cr_assert(rng_mix(y) == ~0ull, "the test's own inverse of rng_mix is wrong");
   Rng r = {y - 0x9e3779b97f4a7c15ull}; /* rng_next adds the increment first */
   float top = rng_float(&r);
-  cr_expect(top < 1.0f, "rng_float returned %a for all-ones bits", top);
-  cr_expect(top == 1.0f - 0x1p-24f, "largest output %a, expected 1 - 2^-24", top);
+  Check rc = CHECK("rng_float (given code)", "docs/07-antialiasing.md, \"The math\"");
+  CHECK_NEAR(&rc, 1.0 - 0x1p-24, top, 0.0, "rng_float for all-ones bits: the largest output, "
+             "below 1");
+  Check c = CHECK("film_to_byte", "docs/01-film.md, \"What you write\"");
   int bad = 0;
   for (int b = 0; b < 256; b++) {
     /* The exact sRGB decoding of code b, in long double. */
@@ -155,8 +170,10 @@ Test(stress, t8_rng_never_returns_one_and_srgb_round_trips_all_codes)
     long double lin = v <= 0.04045L ? v / 12.92L : powl((v + 0.055L) / 1.055L, 2.4L);
     int back = film_to_byte((float)lin, TONEMAP_SRGB);
     bad += back != b;
-    cr_expect(back == b, "sRGB code %d came back as %d", b, back);
+    CHECK_INT(&c, b, back, "srgb tone map of %.9g, the exact linear value of sRGB code %d: "
+              "the code back", (double)lin, b);
   }
+  CHECK_DONE(&c);
   stress_table("t8_rng_srgb", "Test 8: random numbers and sRGB export",
                "| check | result |\n|---|---|");
   stress_row("t8_rng_srgb", "| largest rng_float (all-ones bits) | 1 - 2^-24 = %a |", top);

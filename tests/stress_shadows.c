@@ -1,9 +1,12 @@
-/* Stress tests 4-5 of docs/accuracy.md: step 05's render of its own scene,
+/* Stress test 4 of docs/accuracy.md: step 05's render of its own scene,
  * scaled and translated, against a long-double reference renderer written
- * here (exact shadow rays that skip the convex shape they leave); and
- * degenerate scenes that must give no NaN or infinite pixel. */
-#include <criterion/criterion.h>
+ * here (exact shadow rays that skip the convex shape they leave). Before it
+ * counts acne, it checks that step 04's render of the unscaled scene (no
+ * shadows) matches the reference without shadows: otherwise the camera, the
+ * intersections or Phong are wrong, and it says so. */
 #include <stdlib.h>
+
+#include "check.h"
 
 #include "app/image.h"
 #include "app/parser.h"
@@ -11,6 +14,7 @@
 
 #define W 160
 #define H 120
+#define STEP04 BUILD_DIR "/bin/04-phong"
 #define STEP05 BUILD_DIR "/bin/05-shadows"
 #define MISTAKES BUILD_DIR "/bin/mistakes"
 
@@ -84,6 +88,9 @@ static bool ref_occluded(const Scene *sc, int skip, L3 o, L3 d, LD tmax, LD shif
   return hit;
 }
 
+/* The reference with shadows (step 05's model) or without (step 04's). */
+static bool ref_shadows = true;
+
 /* Phong at the exact hit (p, n) of shape k seen from eye (step 05's model). */
 static L3 ref_shade(const Scene *sc, int k, L3 p, L3 n, L3 eye, LD shift, bool *amb)
 {
@@ -104,7 +111,7 @@ static L3 ref_shade(const Scene *sc, int k, L3 p, L3 n, L3 eye, LD shift, bool *
       li = l3(lt->irradiance);
     }
     LD nl = dot(n, l);
-    if (!(nl > 0.0L) || ref_occluded(sc, k, p, l, dist, shift, amb))
+    if (!(nl > 0.0L) || (ref_shadows && ref_occluded(sc, k, p, l, dist, shift, amb)))
       continue;
     L3 r = sub(mul(n, 2.0L * nl), l);
     LD rv = dot(r, v), lobe = powl(rv > 0.0L ? rv : 0.0L, m->shininess);
@@ -120,13 +127,19 @@ static L3 ref_shade(const Scene *sc, int k, L3 p, L3 n, L3 eye, LD shift, bool *
  * passes within the float camera ray's error of the exact ray, or within the
  * float hit point's error of a shadow ray. `coord` bounds the coordinates of
  * the shapes and lights (not of the eye). */
+/* The exact camera ray's direction through film point (nx, ny). */
+static L3 ref_camera_dir(const Camera *cam, LD nx, LD ny)
+{
+  L3 w = unit(sub(l3(cam->eye), l3(cam->center)));
+  L3 u = unit(cross(l3(cam->up), w)), v = cross(w, u);
+  LD hh = tanl(0.5L * cam->fov_y_deg * 3.14159265358979323846264L / 180.0L), hw = hh * W / H;
+  return unit(add(add(mul(u, -hw + 2.0L * hw * nx), mul(v, -hh + 2.0L * hh * ny)), mul(w, -1.0L)));
+}
+
 static L3 ref_pixel(const Scene *sc, LD nx, LD ny, LD coord, bool *amb)
 {
   const Camera *cam = &sc->camera;
-  L3 eye = l3(cam->eye), w = unit(sub(eye, l3(cam->center)));
-  L3 u = unit(cross(l3(cam->up), w)), v = cross(w, u);
-  LD hh = tanl(0.5L * cam->fov_y_deg * 3.14159265358979323846264L / 180.0L), hw = hh * W / H;
-  L3 d = unit(add(add(mul(u, -hw + 2.0L * hw * nx), mul(v, -hh + 2.0L * hh * ny)), mul(w, -1.0L)));
+  L3 eye = l3(cam->eye), d = ref_camera_dir(cam, nx, ny);
   int best = -1;
   LD t = INFINITY;
   for (int k = 0; k < sc->n_shapes; k++) {
@@ -236,7 +249,8 @@ static float *render_with(const char *cmd, const char *scene, const char *out)
 {
   char line[1024];
   snprintf(line, sizeof line, "%s --scene %s -o %s --threads 2 --quiet", cmd, scene, out);
-  cr_assert(system(line) == 0, "failed: %s", line);
+  cr_assert(system(line) == 0, "the step's program failed (a crash or an error in a step's "
+            "function; run the command to see): %s", line);
   int w, h;
   float *rgb;
   cr_assert(image_load(out, &w, &h, &rgb) && w == W && h == H, "cannot read %s", out);
@@ -267,31 +281,131 @@ static Count compare(const float *img, const float *lo, const float *hi, const b
   return n;
 }
 
+/* The scene of `base` at scale s, translation T, far camera or not, in
+ * STRESS_DIR; its path in `scene`, loaded into sc. */
+static void scaled_scene(const Scene *base, double s, double T, bool far, char *scene,
+                         size_t size, Scene *sc)
+{
+  snprintf(scene, size, STRESS_DIR "/t4_%+d_%d_%d.scene", (int)lround(log10(s)), T > 0.0, far);
+  write_scene(base, scene, s, T, far);
+  scene_init(sc);
+  cr_assert(parser_load_file(scene, sc), "cannot load the test's own scene %s", scene);
+}
+
+/* The first precondition of test 4: the scaled scenes are seen from up to
+ * 10^4 radii (the far camera); their hit points come from sphere_hit_t, so
+ * its distance must be right there before acne means anything. Central rays
+ * at 1.1 .. 10^5 radii against the long-double root (16 ulps: test 1 asks 4). */
+static void require_precise_sphere(void)
+{
+  Check c = CHECK("sphere_hit_t", "docs/02-intersection.md, \"What you write\"");
+  for (int k = 0; k < 400; k++) {
+    Rng g = rng_make(40, 0, (uint32_t)k);
+    double ratio = stress_log10u(&g, log10(1.1), 5.0);
+    Sphere s = {.center = glms_vec3_scale(stress_unit(&g), (float)stress_log10u(&g, -2.0, 2.0)),
+                .radius = (float)stress_log10u(&g, -2.0, 2.0)};
+    vec3s u = stress_unit(&g);
+    vec3s o = glms_vec3_add(s.center, glms_vec3_scale(u, (float)(ratio * s.radius)));
+    L3 d = unit(sub(l3(s.center), l3(o)));
+    Ray r = {.o = o, .d = vec_make((float)d.x, (float)d.y, (float)d.z)};
+    LD clear, want = ref_sphere(&s, l3(r.o), unit(l3(r.d)), INFINITY, &clear);
+    float t = sphere_hit_t(&s, r, INFINITY);
+    double ulps = fabs((double)(t - want)) / stress_ulp((double)want);
+    CHECK_REQUIRE(&c, ulps <= 16.0, "a central ray toward a sphere %.3g radii away is off by "
+                  "%.3g ulps (t = %.9g, exact %.9Lg): the scaled scenes of this test are seen "
+                  "from up to 10^4 radii, so it cannot tell acne from a wrong distance; "
+                  "stress test 1 says which refinement is missing", ratio, ulps, t, want);
+  }
+}
+
+/* The second precondition of test 4: step 04's render of the unscaled scene matches
+ * the long-double reference without shadows. Acne is only acne when the
+ * camera, the intersections and Phong are right. */
+static void require_plain_render(const Scene *base, float *lo, float *hi, bool *amb)
+{
+  char scene[256];
+  Scene sc;
+  scaled_scene(base, 1.0, 0.0, false, scene, sizeof scene, &sc);
+  ref_shadows = false;
+  ref_render(&sc, 10.0L, 4.0L * 0x1p-24L, lo, hi, amb);
+  ref_shadows = true;
+  float *img = render_with(STEP04, scene, STRESS_DIR "/t4_plain_04.pfm");
+  Count n = compare(img, lo, hi, amb);
+  free(img);
+  scene_free(&sc);
+  Check c = CHECK("camera_ray, sphere_hit_t, plane_hit_t, shade_phong_light",
+                  "docs/04-phong.md, \"What you write\"");
+  CHECK_REQUIRE(&c, n.acne + n.leak == 0, "step 04's render of scenes/spheres.scene at 160x120 "
+                "(no shadows) differs from the long-double reference without shadows in %ld "
+                "of %d pixels (%ld darker, %ld brighter): the camera, an intersection or Phong "
+                "is wrong, not the shadows; fix `make test-step 2`, `3` and `4` first (this "
+                "test measures shadow acne and light leaks only)", n.acne + n.leak, W * H,
+                n.acne, n.leak);
+}
+
+/* The largest angle between camera_ray's directions and the exact ones, over
+ * a 5 x 5 grid of pixel centres. */
+static double camera_error(const Scene *sc)
+{
+  LD worst = 0.0L;
+  for (int j = 0; j < 5; j++)
+    for (int i = 0; i < 5; i++) {
+      LD nx = (32 * i + 16.5L) / W, ny = (24 * j + 12.5L) / H;
+      Ray r = camera_ray(&sc->camera, (float)nx, (float)ny);
+      L3 want = ref_camera_dir(&sc->camera, (float)nx, (float)ny), got = unit(l3(r.d));
+      L3 x = cross(want, got);
+      LD a = sqrtl(dot(x, x));
+      worst = isnan(a) || a > worst ? a : worst;
+    }
+  return (double)worst;
+}
+
 Test(stress, t4_no_acne_and_no_leak_at_any_scale, .timeout = 600)
 {
   Scene base;
   scene_init(&base);
   cr_assert(parser_load_file("scenes/spheres.scene", &base), "cannot load the step-05 scene");
+  float *lo = malloc(sizeof(float) * 3 * W * H), *hi = malloc(sizeof(float) * 3 * W * H);
+  bool *amb = malloc(sizeof(bool) * W * H);
+  cr_assert(lo && hi && amb, "out of memory");
+  require_precise_sphere();
+  require_plain_render(&base, lo, hi, amb);
   stress_table("t4_shadows", "Test 4: pixels with shadow acne (darker than the reference) / "
                "light leaks (brighter), step 05 against a long-double reference, 160x120; "
                "fixed epsilon = tools/mistakes.c epsilon=1e-4",
                "| scale | translation | camera | undecidable | step 05 acne | step 05 leak | "
                "fixed-eps acne | fixed-eps leak |\n|---|---|---|---|---|---|---|---|");
+  Check c = CHECK_RELYING("ray_spawn, shade_visible",
+                          "docs/05-shadows.md, \"Self-intersection: where the shadow ray starts\"",
+                          "camera_ray (checked for each scene), sphere_hit_t (checked at "
+                          "1.1 .. 10^5 radii), light_incident, shade_phong_light (checked "
+                          "at scale 1 without shadows)");
+  Check cam = CHECK("camera_ray", "docs/03-camera.md, \"What you write\"");
+  double cam_worst = 0.0;
   long bad = 0;
-  float *lo = malloc(sizeof(float) * 3 * W * H), *hi = malloc(sizeof(float) * 3 * W * H);
-  bool *amb = malloc(sizeof(bool) * W * H);
   for (int e = -4; e <= 5; e++) {
     for (int tr = 0; tr < 2; tr++) {
       for (int far = 0; far < 2; far++) {
         double s = pow(10.0, e), T = tr ? fmin(1e5, 1e3 * s) : 0.0;
         char scene[256], out[256], outeps[256];
-        snprintf(scene, sizeof scene, STRESS_DIR "/t4_%+d_%d_%d.scene", e, tr, far);
+        Scene sc;
+        scaled_scene(&base, s, T, far, scene, sizeof scene, &sc);
+        /* Acne is only acne when the camera rays are right (CAM_ANGLE). */
+        double cam_err = camera_error(&sc);
+        cam_worst = fmax(cam_worst, cam_err);
+        CHECK_THAT(&cam, cam_err <= 2.0 * CAM_ANGLE, "step 05's scene scaled by %g, moved by "
+                   "%g, %s camera (the eye %.3g from the origin): camera rays are off by "
+                   "%.3g rad (at most %.3g asked): take the direction as V^-1 (p, 0), not "
+                   "V^-1 (p, 1) - V^-1 (0, 0, 0, 1), whose eye coordinates round away the "
+                   "direction's low bits far from the origin", s, T,
+                   far ? "a far, narrow" : "the usual", glms_vec3_norm(sc.camera.eye), cam_err,
+                   (double)(2.0L * CAM_ANGLE));
+        if (!(cam_err <= 2.0 * CAM_ANGLE)) {
+          scene_free(&sc);
+          continue;
+        }
         snprintf(out, sizeof out, STRESS_DIR "/t4_%+d_%d_%d.pfm", e, tr, far);
         snprintf(outeps, sizeof outeps, STRESS_DIR "/t4_%+d_%d_%d_eps.pfm", e, tr, far);
-        write_scene(&base, scene, s, T, far);
-        Scene sc;
-        scene_init(&sc);
-        cr_assert(parser_load_file(scene, &sc));
         /* Coordinates up to `coord` (eye included); a float camera ray's
          * angle is good to a few 2^-24, plus the rounding of its hit point
          * seen from the eye: the band's half-width. The shapes and lights
@@ -308,15 +422,24 @@ Test(stress, t4_no_acne_and_no_leak_at_any_scale, .timeout = 600)
         Count rob = compare(img, lo, hi, amb), txt = compare(eps, lo, hi, amb);
         stress_row("t4_shadows", "| %g | %g | %s | %ld | %ld | %ld | %ld | %ld |", s, T,
                    far ? "1000x, narrow" : "usual", n_amb, rob.acne, rob.leak, txt.acne, txt.leak);
-        cr_expect(rob.acne == 0 && rob.leak == 0, "scale %g, translation %g, far %d: %ld acne, "
-                  "%ld leak pixels", s, T, far, rob.acne, rob.leak);
+        CHECK_THAT(&c, rob.acne == 0 && rob.leak == 0,
+                   "step 05's scene scaled by %g, moved by %g, %s camera: %ld pixels darker "
+                   "than the reference (shadow acne: a surface shadows itself, so the shadow "
+                   "ray starts too close, or inside, at this scale) and %ld brighter (light "
+                   "leaks: it starts too far off, e.g. a fixed epsilon at a small scale, or "
+                   "stops past the light); the offset must follow the hit's error bound, "
+                   "push = 2 p_err |n|_1, at every scale", s, T, far ? "a far, narrow" : "the "
+                   "usual", rob.acne, rob.leak);
         bad += rob.acne + rob.leak;
         free(img), free(eps);
         scene_free(&sc);
       }
     }
   }
+  CHECK_DONE(&cam);
+  CHECK_DONE(&c);
   free(lo), free(hi), free(amb);
   scene_free(&base);
-  cr_log_info("test 4: %ld acne or leak pixels over all scales", bad);
+  cr_log_info("test 4: %ld acne or leak pixels over all scales; camera rays within %.3g rad",
+              bad, cam_worst);
 }

@@ -1,19 +1,16 @@
 /* Unit tests of step 06: the ambient term m_amb * l_amb, its default (the
  * diffuse colour), its skipping when zero, the point lights the camera sees
  * (P / t^2) and their shapes casting no shadow. docs/06-ambient.md. */
-#include <criterion/criterion.h>
-
-#include <math.h>
+#include "check.h"
 
 #include "app/parser.h"
 #include "shade.h"
 
-static const unsigned STEP06 = SCENE_CAMERA | SCENE_LIGHTS | SCENE_AMBIENT | SCENE_LIGHT_SHAPES;
+#define DOC "docs/06-ambient.md, \"What you write\""
+#define RELIES "shade_phong_light (step 04), shade_visible (step 05), sphere_hit_t, " \
+               "plane_hit_t (step 02)"
 
-static bool vec_eq(vec3s a, vec3s b)
-{
-  return a.x == b.x && a.y == b.y && a.z == b.z;
-}
+static const unsigned STEP06 = SCENE_CAMERA | SCENE_LIGHTS | SCENE_AMBIENT | SCENE_LIGHT_SHAPES;
 
 /* The float nearest to a * b (one rounding, what a float product gives). */
 static vec3s product(vec3s a, vec3s b)
@@ -30,7 +27,7 @@ static Hit floor_hit(const Scene *s)
   for (int k = 0; k < s->n_instances && !floor; k++)
     if (s->instances[k].shape == SHAPE_PLANE)
       floor = &s->instances[k];
-  cr_assert(floor);
+  cr_assert(floor, "the test's scene has no plane");
   Hit h = {.t = 1.0f, .p = vec_make(0.0f, 0.0f, 0.0f), .n = vec_make(0.0f, 1.0f, 0.0f),
            .p_err = 0.0f, .inst = floor};
   return h;
@@ -40,7 +37,7 @@ static void load(Scene *s, const char *text, unsigned features)
 {
   scene_init(s);
   cr_assert(parser_load_string("test", text, s), "scene text rejected:\n%s", text);
-  cr_assert(scene_prepare(s, features));
+  cr_assert(scene_prepare(s, features), "out of memory");
 }
 
 Test(ambient, alone_is_m_amb_times_l_amb)
@@ -52,9 +49,12 @@ Test(ambient, alone_is_m_amb_times_l_amb)
        "plane point 0 0 0 normal 0 1 0 material m\n"
        "sphere center 0 1 -3 radius 1 material m\n",
        STEP06);
-  cr_expect(s.info.ambient);
+  cr_assert(s.info.ambient, "scene_prepare (given code): info.ambient not set");
   vec3s want = product(vec_make(0.3f, 0.9f, 0.55f), vec_make(0.2f, 0.4f, 0.7f));
   RenderCtx ctx = {0};
+  Check c = CHECK_RELYING("shade_phong", DOC, RELIES);
+  const char *what[] = {"the sphere from outside", "the floor from above",
+                        "the floor from below", "the sphere from inside"};
   /* Every point of every object: the same colour, whatever the geometry. */
   const Ray rays[] = {
       {.o = vec_make(0.0f, 1.0f, 2.0f), .d = vec_make(0.0f, 0.0f, -1.0f)},   /* the sphere */
@@ -62,14 +62,10 @@ Test(ambient, alone_is_m_amb_times_l_amb)
       {.o = vec_make(0.0f, -1.0f, 2.0f), .d = vec_make(0.0f, 1.0f, 0.0f)},   /* floor from below */
       {.o = vec_make(0.0f, 1.0f, -3.0f), .d = vec_make(0.6f, 0.0f, 0.8f)},   /* sphere from inside */
   };
-  for (int k = 0; k < 4; k++) {
-    ctx.rays = 0;
-    vec3s c = shade_trace(&s, rays[k], &ctx);
-    cr_expect(vec_eq(c, want), "ray %d: (%a, %a, %a), expected (%a, %a, %a)", k, c.x, c.y, c.z,
-              want.x, want.y, want.z);
-    cr_expect(ctx.rays == 1, "ray %d: %llu rays, expected 1 (no lights)", k,
-              (unsigned long long)ctx.rays);
-  }
+  for (int k = 0; k < 4; k++)
+    CHECK_VEC(&c, want, shade_trace(&s, rays[k], &ctx), 0.0, "no lights, l_amb = (0.2, 0.4, "
+              "0.7), m_amb = (0.3, 0.9, 0.55), %s: m_amb * l_amb", what[k]);
+  CHECK_DONE(&c);
   scene_free(&s);
 }
 
@@ -88,10 +84,12 @@ Test(ambient, ambient_and_one_light_add_exactly)
   load(&s, text, STEP06);
   Hit h = floor_hit(&s);
   RenderCtx ctx = {0};
-  vec3s c = shade_phong(&s, &h, vec_make(0.0f, 3.0f, 3.0f), &ctx);
   /* 0.25 * (0.5, 1, 0.25) + 0.5 = (0.625, 0.75, 0.5625): all exact in binary. */
-  cr_expect(vec_eq(c, vec_make(0.625f, 0.75f, 0.5625f)), "(%g, %g, %g)", c.x, c.y, c.z);
-  cr_expect(ctx.rays == 1, "%llu shadow rays, expected 1", (unsigned long long)ctx.rays);
+  Check c = CHECK_RELYING("shade_phong", DOC, RELIES);
+  CHECK_VEC(&c, vec_make(0.625f, 0.75f, 0.5625f),
+            shade_phong(&s, &h, vec_make(0.0f, 3.0f, 3.0f), &ctx), 0.0,
+            "floor point under a light (diffuse term 0.5), m_amb = 0.25, l_amb = (0.5, 1, "
+            "0.25): m_amb * l_amb + the light's term");
   scene_free(&s);
 }
 
@@ -100,11 +98,14 @@ Test(ambient, zero_ambient_is_skipped_and_gives_exactly_the_lights)
   /* No ambient statement: l_amb = 0. */
   Scene s;
   load(&s, lamp_scene, STEP06);
-  cr_expect(!s.info.ambient, "info.ambient set with l_amb = 0");
+  Check g = CHECK("scene_prepare (given code)", "docs/06-ambient.md, \"The math\"");
+  CHECK_INT(&g, 0, s.info.ambient, "no ambient statement (l_amb = 0): info.ambient");
   Hit h = floor_hit(&s);
   RenderCtx ctx = {0};
-  vec3s c = shade_phong(&s, &h, vec_make(0.0f, 3.0f, 3.0f), &ctx);
-  cr_expect(vec_eq(c, vec_make(0.5f, 0.5f, 0.5f)), "(%g, %g, %g), expected 0.5", c.x, c.y, c.z);
+  Check c = CHECK_RELYING("shade_phong", DOC, RELIES);
+  CHECK_VEC(&c, vec_make(0.5f, 0.5f, 0.5f), shade_phong(&s, &h, vec_make(0.0f, 3.0f, 3.0f), &ctx),
+            0.0, "floor point under a light (diffuse term 0.5), no ambient statement: the "
+            "light's term alone");
   scene_free(&s);
   /* l_amb set, but every material's ambient colour is zero. */
   load(&s,
@@ -113,14 +114,15 @@ Test(ambient, zero_ambient_is_skipped_and_gives_exactly_the_lights)
        "plane point 0 0 0 normal 0 1 0 material m\n"
        "light point position 0 4 0 power 16 16 16\n",
        STEP06);
-  cr_expect(!s.info.ambient, "info.ambient set with m_amb = 0 everywhere");
+  CHECK_INT(&g, 0, s.info.ambient, "l_amb = 1 but m_amb = 0 everywhere: info.ambient");
   h = floor_hit(&s);
-  c = shade_phong(&s, &h, vec_make(0.0f, 3.0f, 3.0f), &ctx);
-  cr_expect(vec_eq(c, vec_make(0.5f, 0.5f, 0.5f)), "(%g, %g, %g), expected 0.5", c.x, c.y, c.z);
+  CHECK_VEC(&c, vec_make(0.5f, 0.5f, 0.5f), shade_phong(&s, &h, vec_make(0.0f, 3.0f, 3.0f), &ctx),
+            0.0, "the same with l_amb = 1 and m_amb = 0: the light's term alone");
   scene_free(&s);
   /* A step without SCENE_AMBIENT (step 05) drops l_amb and says so. */
   load(&s, "ambient 1 1 1\nmaterial m diffuse 0.5 0.5 0.5\n", SCENE_CAMERA | SCENE_LIGHTS);
-  cr_expect(!s.info.ambient && (s.info.ignored & SCENE_AMBIENT) && vec_is_zero(s.ambient));
+  CHECK_THAT(&g, !s.info.ambient && (s.info.ignored & SCENE_AMBIENT) && vec_is_zero(s.ambient),
+             "a step without ambient light: l_amb dropped and reported as ignored");
   scene_free(&s);
 }
 
@@ -135,14 +137,17 @@ Test(ambient, material_ambient_defaults_to_diffuse)
        "plane point 0 0 0 normal 0 1 0 material plain\n",
        STEP06);
   const Material *m = s.materials;
-  cr_expect(vec_eq(m[0].ambient, m[0].diffuse), "no ambient given: ambient = diffuse");
-  cr_expect(vec_is_zero(m[1].ambient), "an explicit ambient 0 0 0 stays zero");
-  cr_expect(vec_eq(m[2].ambient, vec_make(0.1f, 0.2f, 0.4f)), "an explicit ambient is kept");
+  Check g = CHECK("parser_load_string (given code)", "docs/06-ambient.md, \"The math\"");
+  CHECK_VEC(&g, m[0].diffuse, m[0].ambient, 0.0, "a material without ambient: ambient = diffuse");
+  CHECK_VEC(&g, vec_make(0, 0, 0), m[1].ambient, 0.0, "an explicit ambient 0 0 0 stays zero");
+  CHECK_VEC(&g, vec_make(0.1f, 0.2f, 0.4f), m[2].ambient, 0.0, "an explicit ambient is kept");
   /* No light: the floor shows 0.5 * diffuse, exactly (a halving). */
   Ray down = {.o = vec_make(0.0f, 1.0f, 0.0f), .d = vec_make(0.0f, -1.0f, 0.0f)};
   RenderCtx ctx = {0};
-  vec3s c = shade_trace(&s, down, &ctx);
-  cr_expect(vec_eq(c, vec_make(0.15f, 0.3f, 0.45f)), "(%g, %g, %g)", c.x, c.y, c.z);
+  Check c = CHECK_RELYING("shade_phong", DOC, RELIES);
+  CHECK_VEC(&c, vec_make(0.15f, 0.3f, 0.45f), shade_trace(&s, down, &ctx), 0.0,
+            "no lights, l_amb = 0.5, a material whose ambient defaults to its diffuse "
+            "(0.3, 0.6, 0.9): m_amb * l_amb");
   scene_free(&s);
 }
 
@@ -162,21 +167,25 @@ Test(ambient, camera_sees_a_point_light_as_p_over_t_squared)
    * l_amb + P / t^2 as the lecture's slide writes (docs/06-ambient.md). */
   Ray r = {.o = vec_make(0.0f, 0.0f, 0.0f), .d = vec_make(0.0f, 0.0f, -1.0f)};
   vec3s c = shade_trace(&s, r, &ctx);
-  vec3s want = vec_make((float)(50.0L / 90.25L), (float)(100.0L / 90.25L),
-                        (float)(200.0L / 90.25L));
-  cr_expect(vec_eq(c, want), "(%a, %a, %a), expected (%a, %a, %a)", c.x, c.y, c.z, want.x,
-            want.y, want.z);
+  Check ck = CHECK_RELYING("shade_trace", DOC, "sphere_hit_t (step 02)");
+  const long double p[3] = {50.0L, 100.0L, 200.0L};
+  static const char *const names[3] = {"red", "green", "blue"};
+  /* P / t^2 or P * (1 / t^2): the last bits are free, 4 ulps. */
+  for (int k = 0; k < 3; k++)
+    CHECK_ULPS(&ck, (float)(p[k] / 90.25L), c.raw[k], 4, "camera ray into a point light's "
+               "sphere (radius 0.5, 10 away: t = 9.5) of power (50, 100, 200): P / t^2, %s",
+               names[k]);
   /* From (1, 2, 3) toward the centre (1, 5, 7): distance 5, radius 1, t = 4:
    * P / 16 up to the float rounding of the direction (0, 0.6, 0.8). */
   r = (Ray){.o = vec_make(1.0f, 2.0f, 3.0f), .d = glms_vec3_normalize(vec_make(0.0f, 3.0f, 4.0f))};
   c = shade_trace(&s, r, &ctx);
-  cr_expect(fabsf(c.x / 3.125f - 1.0f) < 1e-6f && fabsf(c.z / 12.5f - 1.0f) < 1e-6f,
-            "(%g, %g, %g), expected (3.125, 6.25, 12.5)", c.x, c.y, c.z);
+  for (int k = 0; k < 3; k++)
+    CHECK_REL(&ck, (double)(p[k] / 16.0L), c.raw[k], 1e-6, "camera ray from 4 away into a "
+              "light's sphere: P / 16, %s", names[k]);
   /* A light without radius has no shape: the ray toward it sees the background. */
   r = (Ray){.o = vec_make(0.0f, 0.0f, 0.0f), .d = glms_vec3_normalize(vec_make(1.0f, 1.0f, 1.0f))};
-  c = shade_trace(&s, r, &ctx);
-  cr_expect(vec_eq(c, vec_make(0.2f, 0.3f, 0.4f)), "(%g, %g, %g): background expected", c.x,
-            c.y, c.z);
+  CHECK_VEC(&ck, vec_make(0.2f, 0.3f, 0.4f), shade_trace(&s, r, &ctx), 0.0,
+            "camera ray toward a point light without radius (no shape): the background");
   scene_free(&s);
 }
 
@@ -194,12 +203,14 @@ Test(ambient, lights_shapes_never_cast_shadows)
        STEP06);
   Hit h = floor_hit(&s);
   RenderCtx ctx = {0};
-  vec3s c = shade_phong(&s, &h, vec_make(0.0f, 3.0f, 3.0f), &ctx);
-  cr_expect(vec_eq(c, vec_make(1.0f, 1.0f, 1.0f)), "(%g, %g, %g), expected 1", c.x, c.y, c.z);
+  Check c = CHECK_RELYING("shade_phong", DOC, RELIES);
+  CHECK_VEC(&c, vec_make(1.0f, 1.0f, 1.0f), shade_phong(&s, &h, vec_make(0.0f, 3.0f, 3.0f), &ctx),
+            0.0, "floor point under two lights, each 0.5, one light's sphere on both shadow "
+            "rays (a light's shape casts no shadow): the sum");
   /* The spheres are there: the camera looking down the axis sees A's at t = 1.5. */
   Ray down = {.o = vec_make(0.0f, 6.0f, 0.0f), .d = vec_make(0.0f, -1.0f, 0.0f)};
-  c = shade_trace(&s, down, &ctx);
-  cr_expect(vec_eq(c, vec_make(16.0f / 2.25f, 16.0f / 2.25f, 16.0f / 2.25f)),
-            "(%g, %g, %g), expected 16 / 1.5^2", c.x, c.y, c.z);
+  Check t = CHECK_RELYING("shade_trace", DOC, "sphere_hit_t (step 02)");
+  CHECK_ULPS(&t, (float)(16.0L / 2.25L), shade_trace(&s, down, &ctx).x, 4,
+             "camera ray into the same light's sphere at t = 1.5: P / t^2");
   scene_free(&s);
 }

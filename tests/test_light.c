@@ -1,14 +1,21 @@
 /* Unit tests of the lights' incident radiance (step 04): point light
- * L_i = P / r^2, directional light L_i = E from -direction. docs/04-phong.md. */
-#include <criterion/criterion.h>
-
-#include <math.h>
+ * L_i = P / r^2, directional light L_i = E from -direction.
+ * docs/04-phong.md, "What you write". */
+#include "check.h"
 
 #include "light.h"
 
-static bool near3(vec3s v, long double x, long double y, long double z, long double tol)
+#define DOC "docs/04-phong.md, \"What you write\""
+
+/* P / r^2 may be computed as P * (1 / r^2) or from r = sqrt(r^2): a few
+ * roundings, so 4 ulps. */
+enum { LI_ULPS = 4 };
+
+static void check_ulps3(Check *c, const long double want[3], vec3s got, int ulps, const char *what)
 {
-  return fabsl(v.x - x) <= tol && fabsl(v.y - y) <= tol && fabsl(v.z - z) <= tol;
+  static const char *const names[3] = {"x / red", "y / green", "z / blue"};
+  for (int k = 0; k < 3; k++)
+    CHECK_ULPS(c, (float)want[k], got.raw[k], ulps, "%s, %s", what, names[k]);
 }
 
 Test(light, point_light_falls_off_as_inverse_square)
@@ -18,8 +25,12 @@ Test(light, point_light_falls_off_as_inverse_square)
   vec3s l;
   float dist;
   vec3s li = light_incident(&L, vec_make(1, 2, -1), 0.0f, &l, &dist);
-  cr_expect(li.x == 1.0f && li.y == 2.0f && li.z == 3.0f, "L_i (%g %g %g)", li.x, li.y, li.z);
-  cr_expect(l.x == 0.0f && l.y == 0.0f && l.z == 1.0f && dist == 4.0f);
+  Check c = CHECK("light_incident", DOC);
+  const char *what = "point light of power (16, 32, 48) 4 units along +z";
+  check_ulps3(&c, (long double[3]){1, 2, 3}, li, LI_ULPS,
+              "point light (16, 32, 48) 4 units along +z: L_i = P / r^2");
+  CHECK_VEC(&c, vec_make(0, 0, 1), l, 0.0, "%s: l, the unit direction toward it", what);
+  CHECK_NEAR(&c, 4.0, dist, 0.0, "%s: its distance", what);
 }
 
 Test(light, point_light_off_axis)
@@ -29,13 +40,17 @@ Test(light, point_light_off_axis)
   vec3s l;
   float dist;
   vec3s li = light_incident(&L, vec_make(0, 0, 0), 1e-6f, &l, &dist);
-  cr_expect(near3(li, 1.0L, 0.5L, 1.0L / 9.0L, 1e-7L), "L_i (%.9g %.9g %.9g)", li.x, li.y, li.z);
-  cr_expect(near3(l, 1.0L / 3, 2.0L / 3, 2.0L / 3, 1e-7L), "l (%.9g %.9g %.9g)", l.x, l.y, l.z);
-  cr_expect(fabsf(dist - 3.0f) < 1e-6f);
+  Check c = CHECK("light_incident", DOC);
+  check_ulps3(&c, (long double[3]){1.0L, 0.5L, 1.0L / 9.0L}, li, LI_ULPS,
+              "point light (9, 4.5, 1) at distance 3: L_i = P / 9");
+  check_ulps3(&c, (long double[3]){1.0L / 3, 2.0L / 3, 2.0L / 3}, l, LI_ULPS,
+              "the same light: l = (1, 2, 2) / 3");
+  CHECK_ULPS(&c, 3.0f, dist, 2, "the same light: its distance");
   /* Twice as far: a quarter of the radiance. */
-  vec3s li2 = light_incident(&L, vec_make(-1, -2, -2), 0.0f, &l, &dist);
-  cr_expect(near3(li2, 0.25L, 0.125L, 1.0L / 36.0L, 1e-7L));
-  cr_expect(fabsf(dist - 6.0f) < 1e-6f);
+  li = light_incident(&L, vec_make(-1, -2, -2), 0.0f, &l, &dist);
+  check_ulps3(&c, (long double[3]){0.25L, 0.125L, 1.0L / 36.0L}, li, LI_ULPS,
+              "the same light from twice as far (distance 6): L_i = P / 36");
+  CHECK_ULPS(&c, 6.0f, dist, 2, "from twice as far: the distance");
 }
 
 Test(light, directional_light_is_constant)
@@ -46,12 +61,15 @@ Test(light, directional_light_is_constant)
   vec3s l;
   float dist;
   vec3s points[3] = {vec_make(0, 0, 0), vec_make(100, -50, 7), vec_make(-1e4f, 3, 1e4f)};
+  Check c = CHECK("light_incident", DOC);
   for (int k = 0; k < 3; k++) {
     vec3s li = light_incident(&L, points[k], 0.0f, &l, &dist);
-    cr_expect(li.x == 0.3f && li.y == 0.2f && li.z == 0.1f, "point %d: L_i = E", k);
-    cr_expect(near3(l, -1.0L / 3, 2.0L / 3, -2.0L / 3, 1e-7L), "point %d: l", k);
-    cr_expect(isinf(dist) && dist > 0.0f, "point %d: distance %g", k, dist);
+    CHECK_VEC(&c, L.irradiance, li, 0.0, "directional light, point %d: L_i = E", k);
+    CHECK_VEC(&c, vec_make(-1.0f / 3, 2.0f / 3, -2.0f / 3), l, 1e-7,
+              "directional light travelling along (1, -2, 2)/3, point %d: l = -direction", k);
+    CHECK_NEAR(&c, INFINITY, dist, 0.0, "directional light, point %d: its distance", k);
   }
+  CHECK_DONE(&c);
 }
 
 Test(light, point_light_at_the_shaded_point_gives_zero)
@@ -59,11 +77,15 @@ Test(light, point_light_at_the_shaded_point_gives_zero)
   Light L = {.type = LIGHT_POINT, .position = vec_make(1, 1, 1), .power = vec_make(1, 1, 1)};
   vec3s l;
   float dist;
+  Check c = CHECK("light_incident", DOC);
   vec3s li = light_incident(&L, vec_make(1, 1, 1), 0.0f, &l, &dist);
-  cr_expect(li.x == 0.0f && li.y == 0.0f && li.z == 0.0f, "L_i (%g %g %g)", li.x, li.y, li.z);
-  cr_expect(vec_is_finite(l) && vec_is_finite(li));
-  /* Closer than the point's error bound: also zero, no 1/r^2 blow-up. */
+  CHECK_VEC(&c, vec_make(0, 0, 0), li, 0.0, "point light at the shaded point itself: L_i");
+  CHECK_THAT(&c, vec_is_finite(l), "the same: l must be finite (no 0/0), got (%g, %g, %g)",
+             l.x, l.y, l.z);
+  /* Closer than the point's error bound (min_dist): also zero, no 1/r^2 blow-up. */
   li = light_incident(&L, vec_make(1, 1, 1 + 1e-7f), 1e-6f, &l, &dist);
-  cr_expect(li.x == 0.0f && li.y == 0.0f && li.z == 0.0f);
-  cr_expect(vec_is_finite(l));
+  CHECK_VEC(&c, vec_make(0, 0, 0), li, 0.0, "point light 1e-7 away, closer than "
+            "min_dist = 1e-6: L_i");
+  CHECK_THAT(&c, vec_is_finite(l), "the same: l must be finite, got (%g, %g, %g)", l.x, l.y,
+             l.z);
 }

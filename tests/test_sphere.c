@@ -3,7 +3,7 @@
 #include "check.h"
 #include "sphere.h"
 
-#define DOC "docs/02-intersection.md, \"Ray-sphere\""
+#define DOC "docs/02-intersection.md, \"What you write\""
 
 static Ray ray(float ox, float oy, float oz, float dx, float dy, float dz)
 {
