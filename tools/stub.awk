@@ -1,22 +1,28 @@
 # The solution regions of a C source file, for tools/starter.sh,
-# tools/regions.sh and tools/check-regions.sh (README.md, "For instructors").
-# A region is
+# tools/regions.sh, tools/check-regions.sh and tools/carry.sh (README.md, "For
+# instructors"). A region is
 #   /* BEGIN SOLUTION step NN */ ...the solution... [/* HINT: ... */]
 #   [/* STUB: code */] /* END SOLUTION */
 #
 # Variables (awk -v):
 #   mode=stub (default)  copy the file, replacing each region of a step >=
-#                        keep_below by
-#                          <indent>/* TODO(step NN): <hint> */
+#                        keep_below by the student's region
+#                          <indent>/* BEGIN step NN: NAME */
+#                          <indent>/* TODO(step NN): <what> (docs/NN-name.md, "What you write") */
 #                          <indent><the STUB line's code, if any>
-#                        and dropping only the marker lines of regions of steps
-#                        below keep_below. The hint is the region's HINT line
-#                        when there is one, else "complete <enclosing function>
-#                        (docs/NN-name.md)".
+#                          <indent>/* END step NN */
+#                        and a region of a step below keep_below by the same
+#                        markers around its solution (HINT and STUB lines
+#                        dropped): tools/carry.sh finds the student's code
+#                        between them. <what> is the region's HINT, which must
+#                        name NAME's function, else "complete FUNCTION" (a
+#                        region inside a function) or "write F1 and F2, or
+#                        helpers of your own" (a region at file scope).
 #     keep_below=K       (default 1: every region stubbed)
 #     names="01=01-film 02=..."  step number -> folder, for the docs page
 #     only=I             stub the I-th region of the file alone (1-based) and
-#                        copy every other region as it is, markers included
+#                        copy every other region as it is, solution markers
+#                        included
 #   mode=list            print one line per region instead:
 #                        FILE <tab> FIRST <tab> LAST <tab> STEP <tab> NAME
 #                        NAME: the function the region sits in; for a region
@@ -28,6 +34,27 @@
 function fail(msg) { printf "starter: %s:%d: %s\n", FILENAME, FNR, msg > "/dev/stderr"; bad = 1; exit 1 }
 function defined_name(line,    f) { f = line; sub(/\(.*/, "", f); sub(/.*[ \t*]/, "", f); return f }
 function stubbed() { return only != "" ? (count == only + 0) : !keep }
+# "a,b,c" -> "a, b and c"
+function spoken(list,    parts, n, k, s) {
+  n = split(list, parts, ",")
+  s = parts[1]
+  for (k = 2; k <= n; k++) s = s (k == n ? " and " : ", ") parts[k]
+  return s
+}
+# The TODO line's text: the HINT or a default, then the step doc's section.
+function todo_text(name,    what, fns, n, k, named) {
+  if (hint == "") {
+    what = indent == "" ? "write " spoken(name) ", or helpers of your own" : "complete " name
+  } else {
+    # The HINT must name the function (or one of those the region defines).
+    n = split(name, fns, ",")
+    for (k = 1; k <= n; k++) if (index(hint, fns[k])) named = 1
+    if (!named) { FNR = start; fail("the HINT line must name " spoken(name) ": " hint) }
+    what = hint
+  }
+  if (step in doc) what = what " (docs/" doc[step] ".md, \"What you write\")"
+  return "TODO(step " step "): " what
+}
 BEGIN {
   n = split(names, pairs, " ")
   for (k = 1; k <= n; k++) { split(pairs[k], kv, "="); doc[kv[1]] = kv[2] }
@@ -43,43 +70,45 @@ FNR == 1 { func_name = ""; count = 0; in_region = 0 }
 }
 /\/\* BEGIN SOLUTION step [0-9][0-9] \*\// {
   if (in_region) fail("BEGIN SOLUTION inside another region (line " start ")")
-  in_region = 1; start = FNR; stub = ""; hint = ""; defines = ""; count++
+  in_region = 1; start = FNR; stub = ""; hint = ""; defines = ""; body = ""; count++
   step = $0; sub(/.*BEGIN SOLUTION step /, "", step); step = substr(step, 1, 2)
   indent = $0; sub(/[^ \t].*/, "", indent)
   keep = (step + 0 < keep_below)
-  if (mode == "stub" && !stubbed() && only != "") print
+  raw = $0 "\n"
   next
 }
 /BEGIN SOLUTION/ { fail("expected '/* BEGIN SOLUTION step NN */', found: " $0) }
 in_region && /\/\* END SOLUTION \*\// {
   in_region = 0
+  name = indent == "" ? defines : func_name
   if (mode == "list") {
-    name = indent == "" ? defines : func_name
     if (name == "") name = hint != "" ? hint : "-"
     printf "%s\t%d\t%d\t%s\t%s\n", FILENAME, start, FNR, step, name
     next
   }
-  if (!stubbed()) { if (only != "") print; next }
-  if (hint == "") {
-    hint = "complete " (func_name != "" ? func_name : "this function")
-    if (step in doc) hint = hint " (docs/" doc[step] ".md)"
+  if (only != "" && !stubbed()) { printf "%s%s\n", raw, $0; next }
+  if (name == "") name = "-"
+  printf "%s/* BEGIN step %s: %s */\n", indent, step, spoken(name)
+  if (stubbed()) {
+    print indent "/* " todo_text(name) " */"
+    if (stub != "") print indent stub
+  } else {
+    printf "%s", body
   }
-  print indent "/* TODO(step " step "): " hint " */"
-  if (stub != "") print indent stub
+  printf "%s/* END step %s */\n", indent, step
   next
 }
 /END SOLUTION/ { fail("END SOLUTION without a BEGIN") }
+in_region { raw = raw $0 "\n" }
 in_region && /^[ \t]*\/\* STUB: .*\*\/[ \t]*$/ {
   stub = $0; sub(/^[ \t]*\/\* STUB: /, "", stub); sub(/[ \t]*\*\/[ \t]*$/, "", stub)
-  if (mode == "stub" && !stubbed() && only != "") print
   next
 }
 in_region && /^[ \t]*\/\* HINT: .*\*\/[ \t]*$/ {
   hint = $0; sub(/^[ \t]*\/\* HINT: /, "", hint); sub(/[ \t]*\*\/[ \t]*$/, "", hint)
-  if (mode == "stub" && !stubbed() && only != "") print
   next
 }
 mode == "list" { next }
-in_region { if (!stubbed()) print; next }
+in_region { body = body $0 "\n"; next }
 { print }
 END { if (!bad && in_region) { FNR = start; fail("region never ends (no END SOLUTION)") } }
