@@ -194,13 +194,11 @@ sanitize:
 	$(MAKE) BUILD=build/san SAN=1 OPT=-O1 test
 
 # ---------------------------------------------------------------- images, diffs
-# Reference images: each step's default scene at the reference size. Only on
-# purpose: they are what the image tests compare against.
-IMG_SIZE := --width 320 --height 240
+# Reference images: each step's default scene at the reference size, with the
+# image test's options (tools/images.sh). Only on purpose: they are what the
+# image tests compare against (make check-images says when they are stale).
 images: $(BINS)
-	@for s in $(PRESENT); do \
-	  if [ $$s = 01-film ]; then size=""; else size="$(IMG_SIZE)"; fi; \
-	  $(BUILD)/bin/$$s $$size --threads 2 -o images/$$s.png || exit 1; done
+	@tools/images.sh write $(BUILD) $(PRESENT)
 
 # The pictures of shadow and ambient mistakes in docs/05-shadows.md and
 # docs/06-ambient.md: tools/mistakes.c renders them (on purpose only).
