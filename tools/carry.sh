@@ -34,6 +34,7 @@ n=$((10#$1))
 if [ -n "$solution" ]; then [ $n -ge 1 ] && [ $n -le 8 ] || usage
 else [ $n -ge 2 ] && [ $n -le 8 ] || usage; fi
 nn=$(printf %02d $n)
+later=$([ $n -eq 8 ] && echo "step 08" || echo "steps $nn to 08")
 
 # The student's regions: one line per region, FILE FIRST LAST STEP KEY TODO.
 regions_of() {
@@ -123,6 +124,7 @@ fi
 # student wrote it first gets the code of that first place.
 errors=0; copies=0; replaced=0; repeated=0
 declare -A targets_of changed unfinished
+replaced_msgs=()
 while IFS=$'\t' read -r f first last step key todo; do
   folder=$(step_of "$f")
   [ "$folder" != 00 ] && [ $((10#$folder)) -ge $n ] && [ $((10#$step)) -lt $n ] || continue
@@ -149,8 +151,18 @@ while IFS=$'\t' read -r f first last step key todo; do
   targets_of["$src:$key"]+="${targets_of["$src:$key"]:+,} $f"
   if [ "$todo" = 0 ]; then # the student's own code there, different: keep a copy
     replaced=$((replaced + 1)); changed[$f]=2
-    echo "carry: $f:$first: your step-$step code there ($(name_of "$key")) differs from $src's: replaced by it (the old file is kept, see below)"
+    replaced_msgs+=("carry: $f:$first: your step-$step code there ($(name_of "$key")) differs from $src's: replaced by it (the old file is kept, see below)")
   fi
+done <<<"$table"
+# A folder between the first place and N keeps its own copy; say when it
+# differs, in case a fix was made there instead of in the first place.
+while IFS=$'\t' read -r f first last step key todo; do
+  folder=$(step_of "$f")
+  [ "$folder" != 00 ] && [ $((10#$folder)) -lt $n ] && [ $((10#$step)) -lt $n ] && [ "$todo" = 0 ] || continue
+  IFS=$'\t' read -r src sfirst slast stodo <<<"$(first_place "$key" "${f##*/}")"
+  [ "$src" != "$f" ] && [ "$stodo" = 0 ] || continue
+  cmp -s <(body "$src" "$sfirst" "$slast") <(body "$f" "$first" "$last") && continue
+  echo "carry: note: $f:$first has its own step-$step code ($(name_of "$key")), different from $src's, which is the one copied; if you fixed something there, fix it in $src and make carry $n again" >&2
 done <<<"$table"
 if [ $errors -gt 0 ]; then
   echo "carry: nothing copied ($errors problem(s) above)" >&2
@@ -160,9 +172,11 @@ if [ $repeated -eq 0 ]; then
   echo "carry: nothing to copy: no step folder from $nn on repeats a region of the steps below $nn (that code is in common/ or in its own step's folder, used as it is)"
   exit 0
 elif [ $copies -eq 0 ]; then
-  echo "carry: nothing to copy: steps $nn to 08 already hold your code of the steps below $nn"
+  echo "carry: nothing to copy: $later already $([ $n -eq 8 ] && echo holds || echo hold) your code of the steps below $nn"
   exit 0
 fi
+
+[ ${#replaced_msgs[@]} -eq 0 ] || printf '%s\n' "${replaced_msgs[@]}"
 
 # Every new file is written in $tmp first; then backups, then the files.
 for f in "${!changed[@]}"; do
@@ -171,7 +185,12 @@ done
 backup=""
 for f in "${!changed[@]}"; do
   [ "${changed[$f]}" = 2 ] || continue
-  [ -n "$backup" ] || backup=carry-backup/$(date +%Y%m%d-%H%M%S)
+  if [ -z "$backup" ]; then # a folder of its own, even for two runs in a second
+    backup=carry-backup/$(date +%Y%m%d-%H%M%S)
+    k=1; suffix=""
+    while [ -e "$backup$suffix" ]; do k=$((k + 1)); suffix=-$k; done
+    backup=$backup$suffix
+  fi
   mkdir -p "$backup/$(dirname "$f")"
   cp -p "$f" "$backup/$f"
 done
@@ -180,4 +199,4 @@ for k in "${!targets_of[@]}"; do
   key=${k#*:}
   echo "carry: step ${key%%:*} ($(name_of "$key")) from ${k%%:*} ->${targets_of[$k]}"
 done | sort
-echo "carry: $copies region(s) copied into steps $nn to 08$( [ -n "$backup" ] && echo "; $replaced held different code of yours: the files as they were are in $backup/" )"
+echo "carry: $copies region(s) copied into $later$( [ -n "$backup" ] && echo "; $replaced held different code of yours: the files as they were are in $backup/" )"
