@@ -20,9 +20,9 @@
 #                        helpers of your own" (a region at file scope).
 #     keep_below=K       (default 1: every region stubbed)
 #     names="01=01-film 02=..."  step number -> folder, for the docs page
-#     only=I             stub the I-th region of the file alone (1-based) and
-#                        copy every other region as it is, solution markers
-#                        included
+#     only=I[,J...]      stub the I-th (J-th...) region of the file alone
+#                        (1-based) and copy every other region as it is,
+#                        markers included
 #   mode=list            print one line per region instead:
 #                        FILE <tab> FIRST <tab> LAST <tab> STEP <tab> NAME
 #                        NAME: the function the region sits in; for a region
@@ -33,7 +33,7 @@
 
 function fail(msg) { printf "starter: %s:%d: %s\n", FILENAME, FNR, msg > "/dev/stderr"; bad = 1; exit 1 }
 function defined_name(line,    f) { f = line; sub(/\(.*/, "", f); sub(/.*[ \t*]/, "", f); return f }
-function stubbed() { return only != "" ? (count == only + 0) : !keep }
+function stubbed() { return only != "" ? ((count "") in chosen) : !keep }
 # "a,b,c" -> "a, b and c"
 function spoken(list,    parts, n, k, s) {
   n = split(list, parts, ",")
@@ -60,6 +60,7 @@ BEGIN {
   for (k = 1; k <= n; k++) { split(pairs[k], kv, "="); doc[kv[1]] = kv[2] }
   if (mode == "") mode = "stub"
   if (keep_below == "") keep_below = 1
+  n = split(only, picked, ","); for (k = 1; k <= n; k++) chosen[picked[k] + 0] = 1
 }
 FNR == 1 { func_name = ""; count = 0; in_region = 0 }
 # A function definition starts at column 0; remember it (outside a region: the
