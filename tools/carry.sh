@@ -61,7 +61,7 @@ table=$(regions_of $files) || {
 manifest=tools/starter-regions.tsv
 if [ -f "$manifest" ] && [ -z "$solution" ]; then
   bad=$(awk -F'\t' '
-    FNR == NR { want[$1 "\t" $3] = 1; file[$1] = 1; next }
+    FNR == NR { want[$1 "\t" $3] = 1; next }
     { have[$1 "\t" $5] = 1 }
     END {
       for (k in want) if (!(k in have)) { split(k, p, "\t"); printf "%s: the region /* BEGIN step %s */ ... /* END step %s */ is gone (its marker lines removed or changed)\n", p[1], p[2], substr(p[2], 1, 2) }
@@ -147,7 +147,7 @@ while IFS=$'\t' read -r f first last step key todo; do
   mkdir -p "$tmp/$f.repl"
   cp "$tmp/src" "$tmp/$f.repl/$idx"
   copies=$((copies + 1))
-  changed[$f]=1
+  [ "${changed[$f]:-}" = 2 ] || changed[$f]=1
   targets_of["$src:$key"]+="${targets_of["$src:$key"]:+,} $f"
   if [ "$todo" = 0 ]; then # the student's own code there, different: keep a copy
     replaced=$((replaced + 1)); changed[$f]=2
