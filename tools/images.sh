@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Write (or check) the reference images images/NN-name.png: each step's
 # default scene rendered with the options of the image test
-# (tests/image_test.c: --width W --height H --threads 2 --quiet), at 320x240,
-# 01-film at its scene's 256x128.
+# (tests/image_test.c: --width W --height H --threads 2 --quiet, and the
+# options in images/NN-name.args when that file exists), at 320x240, 01-film
+# at its scene's 256x128.
 # Usage: tools/images.sh write|check BUILD STEP...   (make images, make check-images)
 # check renders into a temporary folder and fails when any pixel of a
 # reference differs from the render, by any amount.
@@ -15,9 +16,10 @@ stale=0
 for s in "$@"; do
   out=images/$s.png
   [ "$mode" = check ] && out=$tmp/$s.png
-  # shellcheck disable=SC2046  # size() is two options and their values
+  args=$(cat "images/$s.args" 2>/dev/null || true)
   # What a step says it ignores (the lights, in steps 02-03) is no news here.
-  "$build/bin/$s" $(size "$s") --threads 2 --quiet -o "$out" 2>"$tmp/err" || {
+  # shellcheck disable=SC2046,SC2086  # options and their values, split on spaces
+  "$build/bin/$s" $(size "$s") --threads 2 --quiet $args -o "$out" 2>"$tmp/err" || {
     cat "$tmp/err" >&2; exit 1; }
   [ "$mode" = check ] || continue
   if [ ! -f "images/$s.png" ]; then
