@@ -156,7 +156,7 @@ $(table "$D/scaling.csv")
 ### Plain loop, SIMD blocks or BVH (RT_ACCEL=loop|flat|bvh)
 
 Render time (s, median) of step 05 by layout; the default picks blocks up to
-16 spheres and the BVH above (common/accel/accel.h, ACCEL_FLAT_MAX).
+16 spheres and the BVH above (common/accel.h, ACCEL_FLAT_MAX).
 
 $(table "$D/layout.csv")
 EOF

@@ -18,7 +18,7 @@
  * sphere.c's double-precision b and c (the rest as in common/). */
 typedef enum Geometry { TEXTBOOK, FLOAT_BC } Geometry;
 
-/* One shape's distance, out of line like the library's scene_instance_hit_t
+/* One shape's distance, out of line like the library's accel_instance_hit_t
  * (which then calls sphere_hit_t: one call more on the robust side). */
 __attribute__((noinline)) static float other_hit_t(const Instance *in, Ray r, float tmax,
                                                    Geometry g)
