@@ -196,14 +196,10 @@ sanitize:
 
 # ---------------------------------------------------------------- images, diffs
 # Reference images: each step's default scene at the reference size, with the
-# extra options of images/NN-name.args if any (the image test uses the same).
-# Only on purpose: they are what the image tests compare against.
-IMG_SIZE := --width 320 --height 240
+# image test's options (tools/images.sh). Only on purpose: they are what the
+# image tests compare against (make check-images says when they are stale).
 images: $(BINS)
-	@for s in $(PRESENT); do \
-	  if [ $$s = 01-film ]; then size=""; else size="$(IMG_SIZE)"; fi; \
-	  args=$$(cat images/$$s.args 2>/dev/null); \
-	  $(BUILD)/bin/$$s $$size $$args --threads 2 -o images/$$s.png || exit 1; done
+	@tools/images.sh write $(BUILD) $(PRESENT)
 
 # The pictures of shadow and ambient mistakes in docs/05-shadows.md and
 # docs/06-ambient.md: tools/mistakes.c renders them (on purpose only).

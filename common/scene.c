@@ -114,21 +114,12 @@ static bool add_light_shapes(Scene *scene, unsigned features)
   return true;
 }
 
+/* info.ambient: whether some lit shape's m_amb l_amb is non-zero. */
 static void analyze(Scene *scene)
 {
-  SceneInfo *info = &scene->info;
-  for (int k = 0; k < scene->n_lights; k++) {
-    info->n_point += scene->lights[k].type == LIGHT_POINT;
-    info->n_directional += scene->lights[k].type == LIGHT_DIRECTIONAL;
-    info->n_area += scene->lights[k].type == LIGHT_AREA;
-  }
   for (int k = 0; k < scene->n_shapes; k++) {
-    const Instance *inst = &scene->instances[k];
-    const Material *m = &scene->materials[inst->material];
-    info->n_spheres += inst->shape == SHAPE_SPHERE;
-    info->n_planes += inst->shape == SHAPE_PLANE;
-    info->specular |= !vec_is_zero(m->specular);
-    info->ambient |= !vec_is_zero(glms_vec3_mul(m->ambient, scene->ambient));
+    const Material *m = &scene->materials[scene->instances[k].material];
+    scene->info.ambient |= !vec_is_zero(glms_vec3_mul(m->ambient, scene->ambient));
   }
 }
 

@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Write the student starter tree: the tracked files (git ls-files) copied to
-# DIR, every solution region replaced by a TODO(step NN) line and its stub.
+# DIR, every solution region replaced by a TODO(step NN) line and its stub
+# between /* BEGIN step NN: FUNCTION */ and /* END step NN */ (tools/carry.sh
+# finds the student's code there).
 # Usage: tools/starter.sh DIR [N]   (N: keep the solutions of steps below N)
 # README.md, "For instructors", explains the regions and what a student gets.
 set -euo pipefail
@@ -29,52 +31,10 @@ declare -A step_name
 for s in steps/[0-9][0-9]-*/; do s=${s%/}; s=${s#steps/}; step_name[${s%%-*}]=$s; done
 names=$(for k in "${!step_name[@]}"; do printf '%s=%s ' "$k" "${step_name[$k]}"; done)
 
-# The awk program: copy the file, replacing each region of a step >= keep by
-#   <indent>/* TODO(step NN): <hint> */
-#   <indent><the STUB line's code, if any>
-# and dropping only the marker lines of regions of steps below keep. The hint
-# is the region's /* HINT: ... */ line when there is one, else "write the
-# body of <enclosing function> (docs/NN-name.md)". Malformed regions fail.
-read -r -d '' prog <<'AWK' || true
-function fail(msg) { printf "starter: %s:%d: %s\n", FILENAME, FNR, msg > "/dev/stderr"; bad = 1; exit 1 }
-BEGIN { n = split(names, pairs, " "); for (k = 1; k <= n; k++) { split(pairs[k], kv, "="); doc[kv[1]] = kv[2] } }
-# Remember the enclosing function: a definition starts at column 0.
-!in_region && /^[A-Za-z_][A-Za-z_0-9 \t*]*[ \t*]\**[A-Za-z_][A-Za-z_0-9]*\(/ && !/;[ \t]*$/ {
-  f = $0; sub(/\(.*/, "", f); sub(/.*[ \t*]/, "", f); func_name = f
-}
-/\/\* BEGIN SOLUTION step [0-9][0-9] \*\// {
-  if (in_region) fail("BEGIN SOLUTION inside another region (line " start ")")
-  in_region = 1; start = FNR; stub = ""; hint = ""
-  step = $0; sub(/.*BEGIN SOLUTION step /, "", step); step = substr(step, 1, 2)
-  indent = $0; sub(/[^ \t].*/, "", indent)
-  keep = (step + 0 < keep_below)
-  next
-}
-/BEGIN SOLUTION/ { fail("expected '/* BEGIN SOLUTION step NN */', found: " $0) }
-in_region && /\/\* END SOLUTION \*\// {
-  in_region = 0
-  if (keep) next
-  if (hint == "") {
-    hint = "complete " (func_name != "" ? func_name : "this function")
-    if (step in doc) hint = hint " (docs/" doc[step] ".md)"
-  }
-  print indent "/* TODO(step " step "): " hint " */"
-  if (stub != "") print indent stub
-  next
-}
-/END SOLUTION/ { fail("END SOLUTION without a BEGIN") }
-in_region && /^[ \t]*\/\* STUB: .*\*\/[ \t]*$/ {
-  stub = $0; sub(/^[ \t]*\/\* STUB: /, "", stub); sub(/[ \t]*\*\/[ \t]*$/, "", stub)
-  next
-}
-in_region && /^[ \t]*\/\* HINT: .*\*\/[ \t]*$/ {
-  hint = $0; sub(/^[ \t]*\/\* HINT: /, "", hint); sub(/[ \t]*\*\/[ \t]*$/, "", hint)
-  next
-}
-in_region { if (keep) print; next }
-{ print }
-END { if (!bad && in_region) { FNR = start; fail("region never ends (no END SOLUTION)") } }
-AWK
+# tools/stub.awk replaces each region of a step >= keep by its TODO line and
+# stub, and keeps the solution of a step below keep, both between the
+# student's markers.
+stub_awk="$top/tools/stub.awk"
 
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/starter.XXXXXX")
 trap 'rm -rf "$tmp"' EXIT
@@ -86,7 +46,7 @@ while IFS= read -r -d '' f; do
   # rewritten below from the stubbed steps).
   case "$f" in *.c|*.h) is_c=1 ;; *) is_c=0 ;; esac
   if [ $is_c = 1 ] && grep -q 'BEGIN SOLUTION' "$f" 2>/dev/null; then
-    awk -v keep_below="$keep_below" -v names="$names" "$prog" "$f" > "$tmp/tree/$f"
+    awk -v keep_below="$keep_below" -v names="$names" -f "$stub_awk" "$f" > "$tmp/tree/$f"
     chmod --reference="$f" "$tmp/tree/$f"
     regions=$((regions + $(grep -c 'BEGIN SOLUTION' "$f"))); files=$((files + 1))
   else
@@ -106,10 +66,18 @@ if [ -x "$tmp/tree/tools/diffs.sh" ]; then
   (cd "$tmp/tree" && tools/diffs.sh write $(ls -d steps/[0-9][0-9]-* | sed 's|steps/||') >/dev/null)
 fi
 
+# The regions it wrote, one line each (FILE STEP KEY): tools/carry.sh checks
+# the student's markers against this list before it copies anything.
+if [ -f "$tmp/tree/tools/carry.awk" ]; then
+  (cd "$tmp/tree" && for f in $(grep -l -r --include='*.[ch]' -E '/\* BEGIN step [0-9]{2}: ' common steps | sort); do
+     awk -v mode=list -f tools/carry.awk "$f" | awk -F'\t' -v f="$f" '{ print f "\t" $3 "\t" $4 }'
+   done > tools/starter-regions.tsv)
+fi
+
 rm -rf "$dir"
 mkdir -p "$(dirname "$dir")"
 mv "$tmp/tree" "$dir"
-left=$(grep -rl 'BEGIN SOLUTION' "$dir" --exclude=starter.sh --exclude='*.md' --exclude='*.diff' || true)
+left=$(grep -rl 'BEGIN SOLUTION' "$dir" --include='*.c' --include='*.h' || true)
 [ -z "$left" ] || { echo "starter: solution markers left in: $left" >&2; exit 1; }
 echo "starter: wrote $dir ($regions solution regions in $files files;" \
      "$( [ "$keep_below" -gt 1 ] && echo "steps below $keep_below kept solved" || echo "all stubbed" )). Build it: cd $dir && make"

@@ -27,9 +27,9 @@ typedef struct ShadowHull {
  * go to the front side of hit->n. */
 ShadowHull hull_make(const Hit *hit, const Quad *q);
 
-/* False only when no such ray can hit the sphere, as sphere_hit_t (or the
- * accelerator's lanes) compute it: the sphere is clear of the hull by a margin
- * far above rounding, or every ray leaves it (the sphere the point lies on). */
+/* False only when no such ray can hit the sphere, as sphere_hit_t computes
+ * it: the sphere is clear of the hull by a margin far above rounding, or every
+ * ray leaves it (the sphere the point lies on). */
 bool hull_may_meet_sphere(const ShadowHull *h, vec3s c, float r);
 
 /* False only when the box lo..hi is clear of the hull by the margin. */

@@ -1,4 +1,4 @@
-/* The command line every step shares (DESIGN: --scene, -o, --width, ...).
+/* The command line every step shares (--scene, -o, --width, ...).
  * Introduced in step 01; the options are listed by --help and in README.md. */
 #ifndef RT_CLI_H
 #define RT_CLI_H

@@ -1,6 +1,6 @@
-/* Image files and comparison (step 01): tone maps, atomic writes (temporary
- * file, then rename), PFM by hand, PNG through libpng, JPG/HDR and loading
- * through stb. docs/01-film.md. */
+/* Image files and comparison (step 01): tone map names, atomic writes
+ * (temporary file, then rename) with every byte from film_to_byte, PFM by
+ * hand, PNG through libpng, JPG/HDR and loading through stb. docs/01-film.md. */
 #include "app/image.h"
 
 #include "film.h"

@@ -1,5 +1,5 @@
 /* The render loop: every pixel of the film through a step's pixel function,
- * in parallel over tiles (POSIX threads), deterministic whatever the thread
+ * in parallel over tiles (OpenMP threads), deterministic whatever the thread
  * count, with a progress bar on a terminal. Introduced in step 01;
  * docs/01-film.md. */
 #ifndef RT_RENDER_H

@@ -58,6 +58,7 @@ vec3s shade_phong(const Scene *scene, const Hit *hit, vec3s eye, RenderCtx *ctx)
 {
   vec3s c = glms_vec3_zero();
   /* BEGIN SOLUTION step 06 */
+  /* HINT: complete shade_phong: the ambient term m_amb l_amb */
   /* m_amb * l_amb: skipped when the scene has no ambient light at all. */
   if (scene->info.ambient)
     c = glms_vec3_mul(scene->materials[hit->inst->material].ambient, scene->ambient);
@@ -77,6 +78,7 @@ vec3s shade_trace(const Scene *scene, Ray ray, RenderCtx *ctx)
   if (!scene_intersect(scene, ray, INFINITY, &hit))
     return scene->background;
   /* BEGIN SOLUTION step 06 */
+  /* HINT: complete shade_trace: a point light's sphere shows P / t^2 */
   if (hit.inst->light >= 0) {
     /* A point light's sphere shows the radiance P / t^2 it sends this far. */
     const Light *light = &scene->lights[hit.inst->light];

@@ -144,6 +144,7 @@ vec3s shade_phong(const Scene *scene, const Hit *hit, vec3s eye, RenderCtx *ctx)
 {
   vec3s c = glms_vec3_zero();
   /* BEGIN SOLUTION step 06 */
+  /* HINT: complete shade_phong: the ambient term m_amb l_amb */
   /* m_amb * l_amb: skipped when the scene has no ambient light at all. */
   if (scene->info.ambient)
     c = glms_vec3_mul(scene->materials[hit->inst->material].ambient, scene->ambient);
@@ -163,6 +164,7 @@ vec3s shade_trace(const Scene *scene, Ray ray, RenderCtx *ctx)
   if (!scene_intersect(scene, ray, INFINITY, &hit))
     return scene->background;
   /* BEGIN SOLUTION step 08 */
+  /* HINT: complete shade_trace: an area light shows P / A in front, black behind */
   if (hit.inst->light >= 0 && scene->lights[hit.inst->light].type == LIGHT_AREA) {
     /* The front face shows the radiance L = P / A; the light is one-sided and
      * its back emits nothing: black (docs/08-area-lights.md). */
@@ -171,6 +173,7 @@ vec3s shade_trace(const Scene *scene, Ray ray, RenderCtx *ctx)
   }
   /* END SOLUTION */
   /* BEGIN SOLUTION step 06 */
+  /* HINT: complete shade_trace: a point light's sphere shows P / t^2 */
   if (hit.inst->light >= 0) {
     /* A point light's sphere shows the radiance P / t^2 it sends this far. */
     const Light *light = &scene->lights[hit.inst->light];

@@ -1,0 +1,74 @@
+#!/usr/bin/env bash
+# The starter tree, played by a student (make check-starter; CI runs it):
+#   1. make starter (every step stubbed) builds, every TODO line cites a doc
+#      section that exists, and make test-step K fails for every K;
+#   2. then, for K = 1 .. 8, the student writes step K (the solution's code,
+#      put where a student writes it: tools/carry.sh --solution) and runs
+#      make carry K+1: make test-step K must pass and make test-step K+1 fail.
+#      --full: every step at every stage (steps 1..K pass, K+1..8 fail).
+# Usage: tools/check-starter.sh DIR [--full]   (DIR is removed and rewritten)
+# README.md, "For instructors".
+set -uo pipefail
+[ $# -ge 1 ] && [ $# -le 2 ] || { echo "usage: tools/check-starter.sh DIR [--full]" >&2; exit 2; }
+dir=$1 full=${2:-}
+top=$(cd "$(dirname "$0")/.." && pwd)
+start=$(date +%s)
+log=$(mktemp "${TMPDIR:-/tmp}/check-starter.XXXXXX")
+trap 'rm -f "$log"' EXIT
+bad=0
+
+say() { echo "check-starter: $*"; }
+fail() { say "FAIL: $*"; bad=$((bad + 1)); }
+show_log() { sed -n '/FAIL\|fail\|rror\|expected\|got\|read /p' "$log" | head -n 20 | sed 's/^/    /'; }
+# test_step K pass|fail: make test-step K in the starter must pass (or fail).
+test_step() {
+  local k=$1 want=$2 rc
+  make -C "$dir" --no-print-directory -j2 test-step "$k" >"$log" 2>&1
+  rc=$?
+  if [ "$want" = pass ] && [ $rc -ne 0 ]; then
+    fail "make test-step $k should pass (steps 1..$stage written), it fails:"; show_log
+  elif [ "$want" = fail ] && [ $rc -eq 0 ]; then
+    fail "make test-step $k should fail (step $k not written), it passes"
+  fi
+}
+
+tools_starter=$top/tools/starter.sh
+"$tools_starter" "$dir" >/dev/null || exit 1
+dir=$(cd "$dir" && pwd)
+if ! make -C "$dir" -j2 build >"$log" 2>&1; then
+  fail "the starter does not build:"; tail -n 20 "$log" | sed 's/^/    /'; exit 1
+fi
+say "the starter builds ($(grep -c . "$dir/tools/starter-regions.tsv") regions stubbed)"
+# The TODO lines' doc sections (the rest is make check-refs's, in the tree).
+(cd "$dir" && tools/check-refs.sh >"$log" 2>&1)
+todo_refs=$(while IFS=: read -r _ file line rest; do
+  [ -n "$line" ] && sed -n "${line}p" "$dir/$file" 2>/dev/null | grep -q 'TODO(step' && echo "    $file:$line:$rest"
+done < <(grep '^check-refs: [^ ]*:[0-9]*:' "$log" | sed 's/^check-refs: /x:/'))
+[ -z "$todo_refs" ] || { fail "TODO lines cite doc sections that do not exist:"; echo "$todo_refs"; }
+
+stage=0
+before=$bad
+for k in 1 2 3 4 5 6 7 8; do test_step $k fail; done
+[ $bad -eq $before ] && say "no step written: make test-step 1 .. 8 all fail"
+
+for stage in 1 2 3 4 5 6 7 8; do
+  (cd "$dir" && tools/carry.sh --solution "$top" $stage) || { fail "could not write step $stage's regions"; break; }
+  before=$bad
+  if [ $stage -lt 8 ]; then
+    (cd "$dir" && tools/carry.sh $((stage + 1)) >"$log" 2>&1) || { fail "make carry $((stage + 1)):"; sed 's/^/    /' "$log"; break; }
+  fi
+  if [ -n "$full" ]; then
+    for k in 1 2 3 4 5 6 7 8; do test_step $k "$([ $k -le $stage ] && echo pass || echo fail)"; done
+    [ $bad -eq $before ] && say "steps 1..$stage written: make test-step 1..$stage pass, the others fail"
+  else
+    test_step $stage pass
+    [ $stage -lt 8 ] && test_step $((stage + 1)) fail
+    [ $bad -eq $before ] && say "steps 1..$stage written$([ $stage -lt 8 ] && echo ", make carry $((stage + 1))"): make test-step $stage passes$([ $stage -lt 8 ] && echo ", $((stage + 1)) fails")"
+  fi
+done
+
+if [ $bad -gt 0 ]; then
+  say "$bad problem(s) ($(( $(date +%s) - start )) s)"
+  exit 1
+fi
+say "ok ($(( $(date +%s) - start )) s)"
