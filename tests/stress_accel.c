@@ -54,7 +54,7 @@ static void check_layout(const char *layout, int n)
   random_scene(&s, &g, n);
   cr_assert(s.index, "accel_build (given code) built no index");
   Check c = CHECK("scene index (given code: common/accel/)",
-                  "docs/performance.md, \"The scene queries (common/accel.c, common/bvh.c)\"");
+                  "docs/performance.md, \"The scene queries (common/accel/accel.c, common/accel/bvh.c)\"");
   for (int k = 0; k < 20000; k++) {
     Ray r = random_ray(&s, &g);
     float tmax = k % 3 ? INFINITY : uni(&g, 0.1f, 20);
