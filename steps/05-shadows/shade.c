@@ -2,6 +2,8 @@
  * between the point and the light. docs/05-shadows.md. */
 #include "shade.h"
 
+#include "app/trace.h"
+
 bool shade_visible(const Scene *scene, const Hit *hit, vec3s l, float dist, RenderCtx *ctx)
 {
   ctx->rays += !scene->no_occluders; /* a shadow ray, unless none is needed */
@@ -51,6 +53,7 @@ static vec3s shade_light(const Scene *scene, int k, const Hit *hit, vec3s v, Ren
 {
   vec3s l;
   vec3s li = shade_incident(scene, &scene->lights[k], hit, &l, ctx);
+  trace_light(ctx, scene, k, hit, v, li, l, shade_phong_light);
   return shade_phong_light(&scene->materials[hit->inst->material], hit, v, li, l);
 }
 
@@ -67,6 +70,7 @@ vec3s shade_phong(const Scene *scene, const Hit *hit, vec3s eye, RenderCtx *ctx)
 
 vec3s shade_trace(const Scene *scene, Ray ray, RenderCtx *ctx)
 {
+  trace_ray(ctx, scene, ray, shade_trace);
   Hit hit;
   ctx->rays++;
   if (!scene_intersect(scene, ray, INFINITY, &hit))

@@ -4,6 +4,7 @@
 #include "shade.h"
 
 #include "accel/accel.h"
+#include "app/trace.h"
 #include "rng.h"
 #include "sampler.h"
 
@@ -117,6 +118,7 @@ vec3s shade_area(const Scene *scene, int light_index, const Hit *hit, vec3s v,
       c = glms_vec3_add(c, shade_phong_light(m, hit, v, li, l));
   }
   /* END SOLUTION */
+  trace_area(ctx, scene, light_index, hit, v, shade_area);
   return c;
 }
 
@@ -137,6 +139,7 @@ static vec3s shade_light(const Scene *scene, int k, const Hit *hit, vec3s v, Ren
   }
   vec3s l;
   vec3s li = shade_incident(scene, &scene->lights[k], hit, &l, ctx);
+  trace_light(ctx, scene, k, hit, v, li, l, shade_phong_light);
   return shade_phong_light(&scene->materials[hit->inst->material], hit, v, li, l);
 }
 
@@ -159,6 +162,7 @@ vec3s shade_phong(const Scene *scene, const Hit *hit, vec3s eye, RenderCtx *ctx)
 
 vec3s shade_trace(const Scene *scene, Ray ray, RenderCtx *ctx)
 {
+  trace_ray(ctx, scene, ray, shade_trace);
   Hit hit;
   ctx->rays++;
   if (!scene_intersect(scene, ray, INFINITY, &hit))
