@@ -31,38 +31,36 @@ int aov_term(int aov)
   return aov >= AOV_AMBIENT && aov <= AOV_SPECULAR ? aov - AOV_AMBIENT : -1;
 }
 
-void aov_camera_hit(Trace *t, const Scene *scene, const Hit *hit)
+void aov_camera_hit(Trace *t, const TraceEvent *hit)
 {
   vec3s v = glms_vec3_zero();
-  if (t->aov == AOV_DEPTH) {
-    if (hit) {
+  switch ((AovKind)t->aov) {
+  case AOV_DEPTH: /* the mean over the samples that hit */
+    if (hit)
       film_accum_add(&t->sum, glms_vec3_broadcast(hit->t));
-      t->hits++;
-    }
     return;
+  case AOV_NORMAL:
+    if (hit)
+      v = glms_vec3_scale(glms_vec3_adds(hit->n, 1.0f), 0.5f);
+    break;
+  case AOV_ALBEDO:
+    if (hit && hit->inst->material >= 0)
+      v = t->plain.materials[hit->inst->material].diffuse;
+    break;
+  default: return;
   }
-  if (t->aov == AOV_NORMAL && hit)
-    v = glms_vec3_scale(glms_vec3_adds(hit->n, 1.0f), 0.5f);
-  else if (t->aov == AOV_ALBEDO && hit && hit->inst->material >= 0)
-    v = scene->materials[hit->inst->material].diffuse;
-  else if (t->aov != AOV_NORMAL && t->aov != AOV_ALBEDO)
-    return;
   film_accum_add(&t->sum, v);
-}
-
-void aov_shadow_ray(Trace *t, bool blocked)
-{
-  t->shadow_rays++;
-  t->shadow_clear += !blocked;
 }
 
 /* The pixel as usual, through the recorder; its value is the quantity. */
 static vec3s aov_pixel(const Scene *scene, const Film *film, int i, int j, RenderCtx *ctx)
 {
   (void)scene;
-  Trace *t = ctx->trace;
+  Trace *t = (Trace *)ctx->trace; /* events are its first member */
   trace_begin_pixel(t);
+  t->ctx = ctx;
   t->pixel(&t->scene, film, i, j, ctx);
+  trace_drain(t);
   switch ((AovKind)t->aov) {
   case AOV_SHADOW:
     return glms_vec3_broadcast(t->shadow_rays ? (float)t->shadow_clear / (float)t->shadow_rays
@@ -72,31 +70,60 @@ static vec3s aov_pixel(const Scene *scene, const Film *film, int i, int j, Rende
   }
 }
 
-bool aov_render(const Scene *scene, RenderPixelFn pixel, const RenderSettings *set,
-                AovKind aov, Film *film, RenderStats *stats)
+/* One recorder per thread, for `aov`; NULL (one line printed) when out of
+ * memory. */
+static Trace **recorders(const Scene *scene, RenderPixelFn pixel, AovKind aov, int threads)
 {
-  int threads = render_threads(set);
   Trace **traces = calloc((size_t)threads, sizeof *traces);
   bool ok = traces != NULL;
   for (int k = 0; ok && k < threads; k++) {
     traces[k] = trace_new();
-    ok = traces[k] && trace_init(traces[k], scene, false, (int)aov);
-    if (ok)
+    ok = traces[k] && trace_init(traces[k], scene, TRACE_AOV);
+    if (ok) {
+      traces[k]->aov = (int)aov;
       traces[k]->pixel = pixel;
+    }
   }
-  if (ok) {
-    RenderSettings with = *set;
-    with.traces = traces;
-    render(scene, film, aov_pixel, &with, stats);
-  } else {
-    fprintf(stderr, "aov: out of memory\n");
-  }
+  if (ok)
+    return traces;
+  fprintf(stderr, "aov: out of memory\n");
   for (int k = 0; traces && k < threads; k++) {
     if (traces[k])
       trace_free(traces[k]);
     free(traces[k]);
   }
   free(traces);
+  return NULL;
+}
+
+/* The Phong terms: the whole picture rendered on materials that keep one
+ * term (trace.c's masked scene), the background black. */
+bool aov_render(const Scene *scene, RenderPixelFn pixel, const RenderSettings *set,
+                AovKind aov, Film *film, RenderStats *stats)
+{
+  int threads = render_threads(set);
+  Trace **traces = recorders(scene, pixel, aov, threads);
+  TraceEvents **events = traces ? calloc((size_t)threads, sizeof *events) : NULL;
+  bool ok = events != NULL;
+  if (ok && aov_term(aov) >= 0) { /* unrecorded: the scene's own index */
+    Scene masked = traces[0]->masked[aov_term(aov)];
+    masked.index = scene->index;
+    render(&masked, film, pixel, set, stats);
+  } else if (ok) {
+    for (int k = 0; k < threads; k++)
+      events[k] = &traces[k]->events;
+    RenderSettings with = *set;
+    with.traces = events;
+    render(scene, film, aov_pixel, &with, stats);
+  } else if (traces) {
+    fprintf(stderr, "aov: out of memory\n");
+  }
+  for (int k = 0; traces && k < threads; k++) {
+    trace_free(traces[k]);
+    free(traces[k]);
+  }
+  free(traces);
+  free(events);
   return ok;
 }
 

@@ -20,7 +20,7 @@ typedef struct RenderSettings {
   int sampler;        /* sampling pattern (step 07's SamplerKind) */
   float adaptive;     /* adaptive sampling threshold, 0 = off (steps 07, 08) */
   bool progress;      /* draw a progress bar on stderr */
-  struct Trace **traces; /* --aov: one recorder per thread (ctx->trace), else NULL */
+  struct TraceEvents **traces; /* --aov: one per thread (ctx->trace), else NULL */
 } RenderSettings;
 
 /* Per-thread state handed to the pixel function. */
@@ -31,8 +31,8 @@ typedef struct RenderCtx {
   uint32_t pixel;     /* j * width + i of the pixel being rendered */
   uint32_t sample;    /* index of the camera sample being traced (steps 07-08
                        * set it; shading keys its random numbers on both) */
-  struct Trace *trace; /* --trace, --aov: the recorder the hooks of
-                        * common/app/trace.h write to; NULL when off */
+  struct TraceEvents *trace; /* --trace, --aov: where the hooks of
+                              * common/app/trace.h write; NULL when off */
   char pad[24];       /* keep threads' counters on separate cache lines */
 } RenderCtx;
 

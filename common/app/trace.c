@@ -1,9 +1,8 @@
-/* --trace X Y (README.md, "For students"): one pixel rendered alone by the
- * step's own pixel function, on a copy of the scene whose index records each
- * query (the camera ray and its closest hit, each shadow ray and its answer)
- * and answers it with the scene's own index. The steps' hooks (trace.h) add
- * each light's l, n.l and L_i, and the terms, which come from calling the
- * step's functions again, unrecorded, on materials that keep one term. */
+/* The recorder behind --trace and --aov (common/app/trace.h): a copy of the
+ * scene whose index records each query (camera rays, shadow rays and their
+ * answers) and answers it with the scene's own index, and the hooks the
+ * steps' glue calls with the hit, each light's l, n.l, L_i and term.
+ * README.md, "For students". */
 #include "app/trace_state.h"
 
 #include <stdlib.h>
@@ -23,28 +22,29 @@ static void label(const Scene *scene, const Instance *inst, char *buf, size_t si
     snprintf(buf, size, "#%d %s light %d", id, shape[inst->shape], inst->light);
 }
 
-/* ---------------------------------------------------------------- queries */
-
-/* The nearest lit shape on the ray before tmax (what blocks a shadow ray),
- * each tested with the shape's own function; NULL when none. */
-static const Instance *occluder(const Scene *scene, Ray r, float tmax, float *t_out)
+/* The nearest of the first `count` instances on the ray before *tmax (*tmax
+ * becoming its distance), each tested with the shape's own function; NULL
+ * when none. What scene.c's loop answers, without an index. */
+static const Instance *nearest(const Scene *scene, int count, Ray r, float *tmax)
 {
   const Instance *best = NULL;
-  for (int k = 0; k < scene->n_shapes; k++) {
-    float t = scene_instance_hit_t(&scene->instances[k], r, tmax);
-    if (t < tmax) {
-      tmax = t;
+  for (int k = 0; k < count; k++) {
+    float t = scene_instance_hit_t(&scene->instances[k], r, *tmax);
+    if (t < *tmax) {
+      *tmax = t;
       best = &scene->instances[k];
     }
   }
-  *t_out = tmax;
   return best;
 }
 
-static void shadow_query(Trace *t, const Scene *scene, Ray r, float tmax, bool blocked)
+/* ---------------------------------------------------------------- queries */
+
+static void shadow_query(Trace *t, Ray r, float tmax, bool blocked)
 {
-  if (!t->record) {
-    aov_shadow_ray(t, blocked);
+  if (t->mode == TRACE_AOV) {
+    t->shadow_rays++;
+    t->shadow_clear += !blocked;
     return;
   }
   TraceLine *line = trace_add(&t->rays, 0, t->compact ? "light sample" : "shadow ray",
@@ -53,30 +53,30 @@ static void shadow_query(Trace *t, const Scene *scene, Ray r, float tmax, bool b
     trace_vec(line, "o", r.o);
   trace_vec(line, "d", r.d);
   trace_num(line, "tmax", tmax);
-  float at;
-  const Instance *in_way = blocked ? occluder(scene, r, tmax, &at) : NULL;
+  float at = tmax;
+  const Instance *in_way = blocked ? nearest(&t->plain, t->plain.n_shapes, r, &at) : NULL;
   char what[TRACE_WORD] = "none";
   if (in_way)
-    label(scene, in_way, what, sizeof what);
+    label(&t->plain, in_way, what, sizeof what);
   trace_word(line, "occluder", blocked && !in_way ? "yes" : what);
-  t->rays_blocked += blocked;
   if (in_way && !t->compact)
     trace_num(line, "at", at);
+  t->rays_blocked += blocked;
 }
 
-static void camera_query(Trace *t, const Scene *scene, Ray r, const Hit *hit)
+static void camera_query(Trace *t, Ray r, const Instance *hit, float t_hit)
 {
+  const Scene *scene = &t->plain;
   char what[TRACE_WORD] = "none";
   if (hit)
-    label(scene, hit->inst, what, sizeof what);
+    label(scene, hit, what, sizeof what);
   if (t->compact) {
     char key[24];
     snprintf(key, sizeof key, "sample %u", t->sample);
     TraceLine *line = trace_add(&t->lines, 0, key, TRACE_DOC_SAMPLE);
     trace_vec(line, "d", r.d);
     trace_word(line, "hit", what);
-    trace_num(line, "t", hit ? hit->t : INFINITY);
-    trace_vec(line, "rgb", t->colour);
+    trace_num(line, "t", t_hit);
     return;
   }
   TraceLine *line = trace_add(&t->lines, 0, "camera ray", t->camera_doc);
@@ -95,54 +95,58 @@ static void camera_query(Trace *t, const Scene *scene, Ray r, const Hit *hit)
   }
   line = trace_add(&t->lines, 0, "closest hit", TRACE_DOC_HIT);
   trace_word(line, "hit", what);
-  if (!hit) {
+  if (!hit)
     trace_vec(line, "background", scene->background);
-    return;
-  }
-  trace_num(line, "t", hit->t);
-  trace_vec(line, "p", hit->p);
-  trace_vec(line, "n", hit->n);
-  trace_word(line, "backface", hit->backface ? "yes" : "no");
 }
 
+/* A closest-hit query is a camera ray when it starts the pixel or a new
+ * camera sample, or starts at the eye; otherwise it is a shadow test (the
+ * lecture's closest-hit version). */
 static const Instance *traced_closest(const Scene *scene, Ray r, float *tmax)
 {
-  const TraceIndex *ix = (const TraceIndex *)scene->index;
-  Trace *t = ix->trace;
-  Scene in = *scene;
-  in.index = ix->inner;
-  Hit hit;
-  bool found = scene_intersect(&in, r, *tmax, &hit);
-  if (!t->camera_next) { /* a closest-hit query while shading: a shadow test */
-    shadow_query(t, &in, r, *tmax, found);
-  } else {
-    t->camera_next = false;
-    t->camera_rays++;
-    if (t->record)
-      camera_query(t, &in, r, found ? &hit : NULL);
-    else
-      aov_camera_hit(t, &in, found ? &hit : NULL);
+  Trace *t = ((const TraceIndex *)scene->index)->trace;
+  const Scene *in = &t->plain;
+  trace_drain(t);
+  if (t->mode == TRACE_CAPTURE)
+    return in->index ? in->index->closest(in, r, tmax) : nearest(in, in->n_instances, r, tmax);
+  float limit = *tmax;
+  const Instance *hit = in->index ? in->index->closest(in, r, tmax)
+                                  : nearest(in, in->n_instances, r, tmax);
+  vec3s eye = in->camera.eye;
+  bool camera = t->camera_next || t->ctx->sample != t->sample ||
+                (r.o.x == eye.x && r.o.y == eye.y && r.o.z == eye.z);
+  if (!camera) {
+    shadow_query(t, r, limit, hit != NULL);
+    return hit;
   }
-  if (!found)
-    return NULL;
-  *tmax = hit.t;
-  return hit.inst;
+  t->camera_next = false;
+  t->camera_rays++;
+  t->sample = t->ctx->sample;
+  if (t->mode == TRACE_RECORD) {
+    trace_flush_rays(t, 1);
+    camera_query(t, r, hit, hit ? *tmax : INFINITY);
+  } else if (!hit) {
+    aov_camera_hit(t, NULL);
+  }
+  return hit;
 }
 
 static bool traced_any(const Scene *scene, Ray r, float tmax)
 {
-  const TraceIndex *ix = (const TraceIndex *)scene->index;
-  Scene in = *scene;
-  in.index = ix->inner;
-  bool blocked = scene_occluded(&in, r, tmax);
-  shadow_query(ix->trace, &in, r, tmax, blocked);
+  Trace *t = ((const TraceIndex *)scene->index)->trace;
+  const Scene *in = &t->plain;
+  trace_drain(t);
+  float limit = tmax;
+  bool blocked = in->index ? in->index->any(in, r, tmax)
+                           : nearest(in, in->n_shapes, r, &limit) != NULL;
+  if (t->mode != TRACE_CAPTURE)
+    shadow_query(t, r, tmax, blocked);
   return blocked;
 }
 
 /* ---------------------------------------------------------------- hooks */
 
-/* Show the shadow rays traced since the last light under it, at `depth`. */
-static void flush_rays(Trace *t, int depth)
+void trace_flush_rays(Trace *t, int depth)
 {
   for (int k = 0; k < t->rays.n; k++) {
     t->rays.line[k].depth = depth;
@@ -151,44 +155,64 @@ static void flush_rays(Trace *t, int depth)
   t->rays.n = t->rays_blocked = 0;
 }
 
-void trace_end_sample(Trace *t)
+static void on_hit(Trace *t, const TraceEvent *e)
 {
-  if (!t->record)
+  t->lit = e->inst->material >= 0;
+  t->n = e->n;
+  if (t->mode == TRACE_AOV)
+    aov_camera_hit(t, e);
+  if (t->mode != TRACE_RECORD || t->compact || !t->lines.n)
     return;
-  flush_rays(t, 1);
-  if (t->shaded && !t->compact)
-    for (int k = 0; k < TERM_COUNT; k++)
-      trace_vec(trace_add(&t->lines, 0, aov_name((AovKind)(AOV_AMBIENT + k)), k == TERM_AMBIENT ? TRACE_DOC_AMBIENT : TRACE_DOC_LIGHT),
-                "rgb", t->term[k]);
-  t->shaded = false;
+  TraceLine *line = &t->lines.line[t->lines.n - 1]; /* the closest hit line */
+  trace_num(line, "t", e->t);
+  trace_vec(line, "p", e->p);
+  trace_vec(line, "n", e->n);
+  trace_word(line, "backface", e->flag ? "yes" : "no");
 }
 
-void trace_ray_(RenderCtx *ctx, const Scene *scene, Ray ray, TraceShadeFn shade)
+/* Light k's term in camera sample `sample` from the run on materials keeping
+ * `term` (each capture used once); false when that run had no such term. */
+static bool captured(Trace *t, int term, uint32_t sample, int k, vec3s *c)
 {
-  (void)scene;
-  Trace *t = ctx->trace;
-  trace_end_sample(t);
-  t->camera_next = true;
-  t->sample = ctx->sample;
-  int only = aov_term(t->aov);
-  if (!t->record && only < 0)
-    return;
-  /* The sample's colour and terms: the step's shade_trace on the plain and
-   * masked scenes, unrecorded. Lights' shapes and the background belong to
-   * no term. */
-  RenderCtx quiet = *ctx;
-  quiet.trace = NULL;
-  Hit hit;
-  bool lit = scene_intersect(&t->plain, ray, INFINITY, &hit) && hit.inst->material >= 0;
-  if (t->record)
-    t->colour = shade(&t->plain, ray, &quiet);
-  for (int k = 0; k < TERM_COUNT; k++) {
-    if (!t->record && k != only)
-      continue;
-    t->term[k] = lit ? shade(&t->masked[k], ray, &quiet) : glms_vec3_zero();
-    film_accum_add(t->record ? &t->term_sum[k] : &t->sum, t->term[k]);
+  for (int e = 0; e < t->n_captured[term]; e++) {
+    TraceCaptured *cap = &t->captured[term][e];
+    if (!cap->used && cap->sample == sample && cap->light == k) {
+      cap->used = true;
+      *c = cap->c;
+      return true;
+    }
   }
-  t->shaded = true;
+  return false;
+}
+
+static void capture(Trace *t, uint32_t sample, int k, vec3s c)
+{
+  int term = t->term, n = t->n_captured[term];
+  if (n == t->cap_captured[term]) {
+    int cap = n ? 2 * n : 16;
+    TraceCaptured *bigger = realloc(t->captured[term], (size_t)cap * sizeof *bigger);
+    if (!bigger)
+      return;
+    t->captured[term] = bigger;
+    t->cap_captured[term] = cap;
+  }
+  t->captured[term][n] = (TraceCaptured){sample, k, false, c};
+  t->n_captured[term] = n + 1;
+}
+
+/* The light's diffuse and specular terms, as fields or lines under it. */
+static void light_terms(Trace *t, TraceLine *line, const TraceEvent *e, int depth)
+{
+  for (int term = TERM_DIFFUSE; term <= TERM_SPECULAR; term++) {
+    const char *name = aov_name((AovKind)(AOV_AMBIENT + term));
+    vec3s c;
+    TraceLine *to = t->compact ? line : trace_add(&t->lines, depth, name, TRACE_DOC_LIGHT);
+    const char *field = t->compact ? name : "rgb";
+    if (captured(t, term, e->sample, e->light, &c))
+      trace_vec(to, field, c);
+    else
+      trace_word(to, field, "not traced with this term alone");
+  }
 }
 
 static const char *light_type(const Light *light)
@@ -196,61 +220,58 @@ static const char *light_type(const Light *light)
   return light->type == LIGHT_POINT ? "point" : light->type == LIGHT_AREA ? "area" : "directional";
 }
 
-void trace_light_(RenderCtx *ctx, const Scene *scene, int k, const Hit *hit, vec3s v,
-                  vec3s li, vec3s l, TraceLightFn phong_light)
+static void on_light(Trace *t, const TraceEvent *e)
 {
-  Trace *t = ctx->trace;
-  if (!t->record)
-    return;
-  int m = hit->inst->material;
-  vec3s dif = phong_light(&t->materials[TERM_DIFFUSE][m], hit, v, li, l);
-  vec3s spe = phong_light(&t->materials[TERM_SPECULAR][m], hit, v, li, l);
   char key[24];
-  snprintf(key, sizeof key, "light %d %s", k, light_type(&scene->lights[k]));
-  int depth = t->compact;
+  snprintf(key, sizeof key, "light %d %s", e->light, light_type(&t->plain.lights[e->light]));
+  int depth = t->compact, at = t->lines.n;
   TraceLine *line = trace_add(&t->lines, depth, key, TRACE_DOC_LIGHT);
-  trace_vec(line, "l", l);
-  trace_num(line, "n.l", glms_vec3_dot(hit->n, l));
-  trace_vec(line, "L_i", li);
-  if (t->compact) {
+  trace_vec(line, "l", e->l);
+  trace_num(line, "n.l", glms_vec3_dot(t->n, e->l));
+  trace_vec(line, "L_i", e->li);
+  if (t->compact) { /* the shadow ray's answer on the same line */
     const TraceLine *ray = t->rays.n ? &t->rays.line[t->rays.n - 1] : NULL;
     trace_word(line, "occluder", ray ? ray->f[ray->n_fields - 1].word : "no ray");
     t->rays.n = t->rays_blocked = 0;
-    trace_vec(line, "diffuse", dif);
-    trace_vec(line, "specular", spe);
-    return;
   }
-  flush_rays(t, depth + 1);
-  trace_vec(trace_add(&t->lines, depth + 1, "diffuse", TRACE_DOC_LIGHT), "rgb", dif);
-  trace_vec(trace_add(&t->lines, depth + 1, "specular", TRACE_DOC_LIGHT), "rgb", spe);
+  trace_flush_rays(t, depth + 1);
+  light_terms(t, at < t->lines.n ? &t->lines.line[at] : NULL, e, depth + 1);
 }
 
-void trace_area_(RenderCtx *ctx, const Scene *scene, int k, const Hit *hit, vec3s v,
-                 TraceAreaFn area)
+static void on_area(Trace *t, const TraceEvent *e)
 {
-  Trace *t = ctx->trace;
-  if (!t->record) { /* a point nothing can shadow traced no ray: all clear */
-    for (int n = scene->no_occluders ? ctx->set->light_samples : 0; n > 0; n--)
-      aov_shadow_ray(t, false);
-    return;
-  }
-  RenderCtx quiet = *ctx;
-  quiet.trace = NULL;
-  vec3s dif = area(&t->masked[TERM_DIFFUSE], k, hit, v, &quiet);
-  vec3s spe = area(&t->masked[TERM_SPECULAR], k, hit, v, &quiet);
   char key[24];
-  snprintf(key, sizeof key, "light %d %s", k, light_type(&scene->lights[k]));
+  snprintf(key, sizeof key, "light %d area", e->light);
   int depth = t->compact;
   TraceLine *line = trace_add(&t->lines, depth, key, TRACE_DOC_AREA);
-  trace_num(line, "samples", ctx->set->light_samples);
-  if (scene->no_occluders) /* the renderer proved nothing can block the light */
+  trace_num(line, "samples", t->ctx->set->light_samples);
+  if (e->flag) /* the renderer proved nothing can block the light */
     trace_word(line, "shadow rays", "none needed (shadow-volume test)");
   else
     trace_num(line, "shadow rays", t->rays.n);
   trace_num(line, "blocked", t->rays_blocked);
-  trace_vec(line, "diffuse", dif);
-  trace_vec(line, "specular", spe);
-  flush_rays(t, depth + 1);
+  light_terms(t, line, e, depth + 1);
+  trace_flush_rays(t, depth + 1);
+}
+
+void trace_drain(Trace *t)
+{
+  for (int k = 0; k < t->events.n; k++) {
+    const TraceEvent *e = &t->events.e[k];
+    if (e->kind == TRACE_EVENT_HIT)
+      on_hit(t, e);
+    else if (t->mode == TRACE_CAPTURE)
+      capture(t, e->sample, e->light, e->c);
+    else if (t->mode == TRACE_AOV && e->kind == TRACE_EVENT_AREA && e->flag) {
+      t->shadow_rays += t->ctx->set->light_samples; /* no shadow ray: all clear */
+      t->shadow_clear += t->ctx->set->light_samples;
+    } else if (t->mode == TRACE_RECORD)
+      (e->kind == TRACE_EVENT_LIGHT ? on_light : on_area)(t, e);
+  }
+  if (t->events.dropped && t->mode == TRACE_RECORD)
+    trace_num(trace_add(&t->lines, 0, "not shown", TRACE_DOC_HIT), "events",
+              t->events.dropped);
+  t->events.n = t->events.dropped = 0;
 }
 
 /* ---------------------------------------------------------------- set-up */
@@ -275,11 +296,10 @@ Trace *trace_new(void)
   return t;
 }
 
-bool trace_init(Trace *t, const Scene *scene, bool record, int aov)
+bool trace_init(Trace *t, const Scene *scene, TraceMode mode)
 {
   memset(t, 0, sizeof *t);
-  t->record = record;
-  t->aov = aov;
+  t->mode = mode;
   t->compact = scene->samples > 1;
   t->camera_doc = TRACE_DOC_CAMERA;
   t->plain = t->scene = *scene;
@@ -296,7 +316,7 @@ bool trace_init(Trace *t, const Scene *scene, bool record, int aov)
     }
     for (size_t m = 0; m < n; m++)
       t->materials[k][m] = mask(scene->materials[m], k);
-    t->masked[k] = *scene;
+    t->masked[k] = t->scene;
     t->masked[k].materials = t->materials[k];
     t->masked[k].background = glms_vec3_zero();
   }
@@ -305,8 +325,10 @@ bool trace_init(Trace *t, const Scene *scene, bool record, int aov)
 
 void trace_free(Trace *t)
 {
-  for (int k = 0; k < TERM_COUNT; k++)
+  for (int k = 0; k < TERM_COUNT; k++) {
     free(t->materials[k]);
+    free(t->captured[k]);
+  }
   trace_lines_free(&t->lines);
   trace_lines_free(&t->rays);
   memset(t, 0, sizeof *t);
@@ -316,9 +338,7 @@ void trace_begin_pixel(Trace *t)
 {
   t->camera_next = true;
   t->camera_rays = 0;
-  t->shaded = false;
+  t->lit = false;
   t->sum = (FilmAccum){0};
-  t->hits = t->shadow_rays = t->shadow_clear = 0;
-  for (int k = 0; k < TERM_COUNT; k++)
-    t->term_sum[k] = (FilmAccum){0};
+  t->shadow_rays = t->shadow_clear = 0;
 }

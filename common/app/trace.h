@@ -35,52 +35,87 @@ typedef struct TraceLines {
   int n, cap;
 } TraceLines;
 
-/* The step's shading functions the hooks call again, unrecorded, on a copy of
- * the scene whose materials keep one term: the per-term values come from the
- * student's own code. */
-typedef vec3s (*TraceShadeFn)(const Scene *scene, Ray ray, RenderCtx *ctx);
-typedef vec3s (*TraceLightFn)(const Material *m, const Hit *hit, vec3s v, vec3s li, vec3s l);
-typedef vec3s (*TraceAreaFn)(const Scene *scene, int light, const Hit *hit, vec3s v,
-                             RenderCtx *ctx);
-
-/* The Phong terms (index of Trace.terms, and --aov's order). */
+/* The Phong terms, in --aov's order. */
 typedef enum TraceTerm { TERM_AMBIENT, TERM_DIFFUSE, TERM_SPECULAR, TERM_COUNT } TraceTerm;
 
-typedef struct Trace Trace;
+/* What a hook reports: a camera ray's closest hit, a light's term at it. */
+typedef enum TraceEventKind { TRACE_EVENT_HIT, TRACE_EVENT_LIGHT, TRACE_EVENT_AREA } TraceEventKind;
 
-/* Hooks the steps' glue code calls (outside the solution regions). Each one
- * is a single branch on ctx->trace, NULL unless --trace or --aov is given;
- * the work behind it is never inlined into the render (cold: out of the way
- * of the hot path; inlined, it made step 05 about 12 % slower). */
-#define TRACE_COLD __attribute__((cold, noinline))
-TRACE_COLD void trace_ray_(RenderCtx *ctx, const Scene *scene, Ray ray, TraceShadeFn shade);
-TRACE_COLD void trace_light_(RenderCtx *ctx, const Scene *scene, int k, const Hit *hit, vec3s v,
-                  vec3s li, vec3s l, TraceLightFn phong_light);
-TRACE_COLD void trace_area_(RenderCtx *ctx, const Scene *scene, int k, const Hit *hit, vec3s v,
-                 TraceAreaFn area);
+typedef struct TraceEvent {
+  TraceEventKind kind;
+  int light;           /* LIGHT, AREA: index into scene->lights */
+  uint32_t sample;     /* ctx->sample */
+  bool flag;           /* HIT: a back face; AREA: proved unblocked (no
+                        * shadow ray traced) */
+  const struct Instance *inst; /* HIT: the instance hit */
+  float t;             /* HIT: its distance */
+  vec3s p, n;          /* HIT: the hit point and normal */
+  vec3s li, l, c;      /* LIGHT: L_i, toward the light, the term; AREA: c */
+} TraceEvent;
 
-/* A camera ray about to be shaded by `shade` (the step's shade_trace). */
-static inline void trace_ray(RenderCtx *ctx, const Scene *scene, Ray ray, TraceShadeFn shade)
+/* The events reported since the recorder last read them (it does at each
+ * scene query and after the pixel); the last slot takes what does not fit. */
+enum { TRACE_EVENTS = 64 };
+typedef struct TraceEvents {
+  int n, dropped;      /* dropped: reported when the buffer was full */
+  TraceEvent e[TRACE_EVENTS + 1];
+} TraceEvents;
+
+/* Hooks the steps' glue code calls (outside the solution regions), each one
+ * branch on ctx->trace (NULL unless --trace or --aov is given). A hook only
+ * stores the values it is given into ctx->trace, one by one, and hands back
+ * its last argument: no call and no copy of a whole struct, so that the
+ * render around it compiles as it would without it (docs/testing.md,
+ * "Traces", measures it). */
+static inline TraceEvent *trace_slot(RenderCtx *ctx, TraceEventKind kind)
 {
-  if (__builtin_expect(ctx->trace != NULL, 0))
-    trace_ray_(ctx, scene, ray, shade);
+  TraceEvents *ev = ctx->trace;
+  TraceEvent *e = &ev->e[ev->n < TRACE_EVENTS ? ev->n++ : TRACE_EVENTS];
+  ev->dropped += e == &ev->e[TRACE_EVENTS];
+  e->kind = kind;
+  e->sample = ctx->sample;
+  return e;
 }
 
-/* Light k's incident radiance li from the unit direction l at the hit, seen
- * from v, about to go through `phong_light` (the step's shade_phong_light). */
-static inline void trace_light(RenderCtx *ctx, const Scene *scene, int k, const Hit *hit,
-                               vec3s v, vec3s li, vec3s l, TraceLightFn phong_light)
+/* The closest hit of a camera ray (the ray itself is in the query the
+ * recorder saw). */
+static inline void trace_hit(RenderCtx *ctx, const Hit *hit)
 {
-  if (__builtin_expect(ctx->trace != NULL, 0))
-    trace_light_(ctx, scene, k, hit, v, li, l, phong_light);
+  if (__builtin_expect(ctx->trace != NULL, 0)) {
+    TraceEvent *e = trace_slot(ctx, TRACE_EVENT_HIT);
+    e->inst = hit->inst;
+    e->t = hit->t;
+    e->p = hit->p;
+    e->n = hit->n;
+    e->flag = hit->backface;
+  }
 }
 
-/* Area light k about to be sampled at the hit by `area` (the step's shade_area). */
-static inline void trace_area(RenderCtx *ctx, const Scene *scene, int k, const Hit *hit,
-                              vec3s v, TraceAreaFn area)
+/* Light k's term c for the radiance li arriving from the unit direction l at
+ * the camera ray's hit; returns c. */
+static inline vec3s trace_light(RenderCtx *ctx, int k, vec3s li, vec3s l, vec3s c)
 {
-  if (__builtin_expect(ctx->trace != NULL, 0))
-    trace_area_(ctx, scene, k, hit, v, area);
+  if (__builtin_expect(ctx->trace != NULL, 0)) {
+    TraceEvent *e = trace_slot(ctx, TRACE_EVENT_LIGHT);
+    e->light = k;
+    e->li = li;
+    e->l = l;
+    e->c = c;
+  }
+  return c;
+}
+
+/* Area light k's term c at the hit (the sum over its samples); `unoccluded`
+ * when the renderer proved nothing can block it. Returns c. */
+static inline vec3s trace_area(RenderCtx *ctx, int k, bool unoccluded, vec3s c)
+{
+  if (__builtin_expect(ctx->trace != NULL, 0)) {
+    TraceEvent *e = trace_slot(ctx, TRACE_EVENT_AREA);
+    e->light = k;
+    e->flag = unoccluded;
+    e->c = c;
+  }
+  return c;
 }
 
 /* What --trace asks for. */

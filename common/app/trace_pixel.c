@@ -1,6 +1,8 @@
 /* --trace X Y: pixel (X from the left, Y from the top) rendered alone by the
- * step's pixel function, through the recorder (common/app/trace.c), then the
- * pixel's colour and the bytes its export writes. README.md, "For students". */
+ * step's pixel function: first once on materials that keep one term each
+ * (each light's term in each sample captured), then once recorded
+ * (common/app/trace.c); then the pixel's colour and the bytes its export
+ * writes. README.md, "For students". */
 #include "app/trace_state.h"
 
 #include <stdlib.h>
@@ -12,20 +14,21 @@ static const char *tonemap_name(Tonemap tm)
   return tm == TONEMAP_SRGB ? "srgb" : tm == TONEMAP_REINHARD ? "reinhard" : "clamp";
 }
 
-/* The lines after the pixel function: samples spent and mean terms (several
- * samples), the colour and the bytes. */
-static void end_pixel(Trace *t, const Scene *scene, const TraceRequest *req, vec3s c)
+/* The lines after the pixel function: samples spent, the pixel rendered with
+ * each term alone, the colour and the bytes. */
+static void end_pixel(Trace *t, const Scene *scene, const TraceRequest *req,
+                      const vec3s term[TERM_COUNT], bool lit, vec3s c)
 {
-  trace_end_sample(t);
+  trace_flush_rays(t, 1);
   if (t->compact) {
     TraceLine *line = trace_add(&t->lines, 0, "samples", TRACE_DOC_SAMPLE);
     trace_num(line, "taken", t->camera_rays);
     trace_num(line, "budget", scene->samples);
-    for (int k = 0; k < TERM_COUNT && t->term_sum[k].n; k++)
-      trace_vec(trace_add(&t->lines, 0, aov_name((AovKind)(AOV_AMBIENT + k)),
-                          k == TERM_AMBIENT ? TRACE_DOC_AMBIENT : TRACE_DOC_LIGHT),
-                "mean", film_accum_mean(&t->term_sum[k]));
   }
+  for (int k = 0; lit && k < TERM_COUNT; k++)
+    trace_vec(trace_add(&t->lines, 0, aov_name((AovKind)(AOV_AMBIENT + k)),
+                        k == TERM_AMBIENT ? TRACE_DOC_AMBIENT : TRACE_DOC_LIGHT),
+              "rgb", term[k]);
   trace_vec(trace_add(&t->lines, 0, "colour", TRACE_DOC_FILM), "rgb", c);
   TraceLine *line = trace_add(&t->lines, 0, "byte", TRACE_DOC_FILM);
   vec3s bytes;
@@ -65,7 +68,7 @@ bool trace_pixel(const Scene *scene, const RenderSettings *set, const TraceReque
     return false;
   }
   Trace *t = trace_new();
-  if (!t || !trace_init(t, scene, true, -1)) {
+  if (!t || !trace_init(t, scene, TRACE_CAPTURE)) {
     if (!t)
       fprintf(stderr, "trace: out of memory\n");
     free(t);
@@ -75,14 +78,25 @@ bool trace_pixel(const Scene *scene, const RenderSettings *set, const TraceReque
     t->camera_doc = TRACE_DOC_FIXED_CAMERA;
   int i = req->x, j = scene->height - 1 - req->y;
   Film film = {.width = scene->width, .height = scene->height};
+  RenderCtx ctx = {.set = set, .trace = &t->events,
+                   .pixel = (uint32_t)j * (uint32_t)scene->width + (uint32_t)i};
+  vec3s term[TERM_COUNT];
+  for (t->term = 0; t->term < TERM_COUNT; t->term++) {
+    RenderCtx run = ctx;
+    t->ctx = &run;
+    term[t->term] = req->pixel(&t->masked[t->term], &film, i, j, &run);
+    trace_drain(t);
+  }
+  t->mode = TRACE_RECORD;
+  t->ctx = &ctx;
   if (!(req->features & SCENE_SAMPLES))
     trace_vec2(trace_add(&t->lines, 0, "film sample", TRACE_DOC_FILM), "s",
                film_sample(&film, i, j));
-  RenderCtx ctx = {.set = set, .trace = t,
-                   .pixel = (uint32_t)j * (uint32_t)scene->width + (uint32_t)i};
   trace_begin_pixel(t);
   vec3s c = req->pixel(&t->scene, &film, i, j, &ctx);
-  end_pixel(t, scene, req, c);
+  trace_drain(t);
+  bool lit = (req->features & SCENE_LIGHTS) && (t->compact || t->lit);
+  end_pixel(t, scene, req, term, lit, c);
   print(t, scene, req, out);
   trace_free(t);
   free(t);

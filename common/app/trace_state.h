@@ -7,6 +7,8 @@
 
 #include "app/trace.h"
 
+typedef struct Trace Trace;
+
 /* A SceneIndex that records each query, then answers it with `inner` (the
  * scene's own index, or NULL for scene.c's plain loop): same answers. */
 typedef struct TraceIndex {
@@ -26,33 +28,51 @@ typedef struct TraceIndex {
 #define TRACE_DOC_SAMPLE "docs/07-antialiasing.md, \"The math\""
 #define TRACE_DOC_AREA "docs/08-area-lights.md, \"The estimate: N point lights\""
 
+/* What a recorder does with what the hooks report. */
+typedef enum TraceMode {
+  TRACE_RECORD,  /* --trace: lines */
+  TRACE_CAPTURE, /* --trace, a run on masked materials: each light's term */
+  TRACE_AOV,     /* --aov: sums over the pixel */
+} TraceMode;
+
+/* One light's term in one camera sample, from a run on masked materials. */
+typedef struct TraceCaptured {
+  uint32_t sample;
+  int light;
+  bool used;
+  vec3s c;
+} TraceCaptured;
+
 struct Trace {
-  bool record;         /* --trace: keep lines; --aov: only the sums below */
-  int aov;             /* --aov: the AovKind being summed, -1 for --trace */
+  TraceEvents events;  /* first member: ctx->trace points here */
+  TraceMode mode;
+  int term;            /* TRACE_CAPTURE: the term the materials keep */
+  int aov;             /* TRACE_AOV: the AovKind summed */
   bool compact;        /* several camera samples: one line per sample */
   const char *camera_doc; /* step 02's fixed camera or step 03's */
-  RenderPixelFn pixel; /* --aov: the step's pixel function */
+  RenderPixelFn pixel; /* the step's pixel function */
+  const RenderCtx *ctx; /* the pixel's context (its camera sample) */
   Scene scene;         /* what the step renders: index = &index.base */
   TraceIndex index;
-  Scene plain;         /* the same scene, unrecorded (its own index) */
+  Scene plain;         /* the same scene with its own index, unrecorded */
   Scene masked[TERM_COUNT]; /* unrecorded, materials keeping one term */
   Material *materials[TERM_COUNT]; /* owned, masked[t].materials */
 
   /* The pixel so far. */
   bool camera_next;    /* the next closest-hit query is a camera ray */
   int camera_rays;     /* camera rays of this pixel */
-  uint32_t sample;     /* ctx->sample of the current camera ray */
+  uint32_t sample;     /* ctx->sample of the last camera ray */
+  bool lit;            /* the last camera ray hit a lit shape */
+  vec3s n;             /* the normal there */
   TraceLines lines;    /* what --trace prints */
   TraceLines rays;     /* shadow rays not yet shown under their light */
   int rays_blocked;    /* how many of them were blocked */
-  bool shaded;         /* the sample's terms below are known */
-  vec3s colour;        /* the sample's colour (the step's shade_trace) */
-  vec3s term[TERM_COUNT];
-  FilmAccum term_sum[TERM_COUNT]; /* over the pixel's samples */
+  TraceCaptured *captured[TERM_COUNT]; /* owned */
+  int n_captured[TERM_COUNT], cap_captured[TERM_COUNT];
 
   /* --aov sums over the pixel. */
   FilmAccum sum;
-  int hits, shadow_rays, shadow_clear;
+  int shadow_rays, shadow_clear;
 };
 
 /* Building lines: trace_add appends an empty line (NULL when out of memory;
@@ -68,20 +88,20 @@ void trace_word(TraceLine *line, const char *name, const char *word);
  * memory. */
 Trace *trace_new(void);
 
-/* Set up `t` over `scene` (which it must outlive); false when out of memory
- * (one line printed). */
-bool trace_init(Trace *t, const Scene *scene, bool record, int aov);
+/* Set up `t` over `scene` (which it must outlive) for `mode`; false when out
+ * of memory (one line printed). */
+bool trace_init(Trace *t, const Scene *scene, TraceMode mode);
 void trace_free(Trace *t);
 
 /* Forget the previous pixel; the next closest-hit query is its camera ray. */
 void trace_begin_pixel(Trace *t);
 
-/* The end of a camera sample: its shadow rays and terms shown. */
-void trace_end_sample(Trace *t);
+/* Read the events the hooks reported (trace.h), then the shadow rays still
+ * not shown under a light, at `depth`. */
+void trace_drain(Trace *t);
+void trace_flush_rays(Trace *t, int depth);
 
-/* --aov sums (common/app/aov.c): a camera ray's hit (NULL: none), a shadow
- * ray's answer. */
-void aov_camera_hit(Trace *t, const Scene *scene, const Hit *hit);
-void aov_shadow_ray(Trace *t, bool blocked);
+/* --aov sums (common/app/aov.c): a camera ray's hit (NULL: it hit nothing). */
+void aov_camera_hit(Trace *t, const TraceEvent *hit);
 
 #endif

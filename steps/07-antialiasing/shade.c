@@ -53,8 +53,8 @@ static vec3s shade_light(const Scene *scene, int k, const Hit *hit, vec3s v, Ren
 {
   vec3s l;
   vec3s li = shade_incident(scene, &scene->lights[k], hit, &l, ctx);
-  trace_light(ctx, scene, k, hit, v, li, l, shade_phong_light);
-  return shade_phong_light(&scene->materials[hit->inst->material], hit, v, li, l);
+  vec3s c = shade_phong_light(&scene->materials[hit->inst->material], hit, v, li, l);
+  return trace_light(ctx, k, li, l, c);
 }
 
 vec3s shade_phong(const Scene *scene, const Hit *hit, vec3s eye, RenderCtx *ctx)
@@ -76,11 +76,11 @@ vec3s shade_phong(const Scene *scene, const Hit *hit, vec3s eye, RenderCtx *ctx)
 
 vec3s shade_trace(const Scene *scene, Ray ray, RenderCtx *ctx)
 {
-  trace_ray(ctx, scene, ray, shade_trace);
   Hit hit;
   ctx->rays++;
   if (!scene_intersect(scene, ray, INFINITY, &hit))
     return scene->background;
+  trace_hit(ctx, &hit);
   /* BEGIN SOLUTION step 06 */
   /* HINT: complete shade_trace: a point light's sphere shows P / t^2 */
   if (hit.inst->light >= 0) {

@@ -118,8 +118,7 @@ vec3s shade_area(const Scene *scene, int light_index, const Hit *hit, vec3s v,
       c = glms_vec3_add(c, shade_phong_light(m, hit, v, li, l));
   }
   /* END SOLUTION */
-  trace_area(ctx, scene, light_index, hit, v, shade_area);
-  return c;
+  return trace_area(ctx, light_index, scene->no_occluders, c);
 }
 
 /* One light's term at the hit point seen from the direction v. */
@@ -139,8 +138,8 @@ static vec3s shade_light(const Scene *scene, int k, const Hit *hit, vec3s v, Ren
   }
   vec3s l;
   vec3s li = shade_incident(scene, &scene->lights[k], hit, &l, ctx);
-  trace_light(ctx, scene, k, hit, v, li, l, shade_phong_light);
-  return shade_phong_light(&scene->materials[hit->inst->material], hit, v, li, l);
+  vec3s c = shade_phong_light(&scene->materials[hit->inst->material], hit, v, li, l);
+  return trace_light(ctx, k, li, l, c);
 }
 
 vec3s shade_phong(const Scene *scene, const Hit *hit, vec3s eye, RenderCtx *ctx)
@@ -162,11 +161,11 @@ vec3s shade_phong(const Scene *scene, const Hit *hit, vec3s eye, RenderCtx *ctx)
 
 vec3s shade_trace(const Scene *scene, Ray ray, RenderCtx *ctx)
 {
-  trace_ray(ctx, scene, ray, shade_trace);
   Hit hit;
   ctx->rays++;
   if (!scene_intersect(scene, ray, INFINITY, &hit))
     return scene->background;
+  trace_hit(ctx, &hit);
   /* BEGIN SOLUTION step 08 */
   /* HINT: complete shade_trace: an area light shows P / A in front, black behind */
   if (hit.inst->light >= 0 && scene->lights[hit.inst->light].type == LIGHT_AREA) {
