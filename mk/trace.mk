@@ -1,0 +1,28 @@
+# Looking inside a pixel (README.md, "For students"; docs/testing.md,
+# "Traces"): the reference traces and `make trace-step N [X Y]`.
+
+TRACE_DIFF := $(BUILD)/bin/trace-diff
+$(TRACE_DIFF): $(BUILD)/obj/tools/trace-diff.o $(LIBCOMMON)
+	@mkdir -p $(@D)
+	@echo "LD $@"
+	@$(CC) $(CFLAGS) $(LDFLAGS) $^ $(LDLIBS) -o $@
+
+# The reference traces: the pixels of tests/traces/pixels traced by the
+# solution's binaries (on purpose only, like make images).
+traces: $(BINS)
+	@tools/traces.sh write $(BUILD) $(filter-out 01-film,$(PRESENT))
+
+# make trace-step N [X Y]: step N's traces against the references, the first
+# line that differs for each pixel (or only pixel X Y).
+ifeq (trace-step,$(firstword $(MAKECMDGOALS)))
+  N ?= $(word 2,$(MAKECMDGOALS))
+  TRACE_XY := $(wordlist 3,4,$(MAKECMDGOALS))
+  $(foreach w,$(wordlist 2,4,$(MAKECMDGOALS)),$(eval $(w):;@:))
+endif
+trace-step: $(TRACE_DIFF) $(if $(filter $(STEP_N),$(PRESENT)),$(BUILD)/bin/$(STEP_N))
+	@if [ -z "$(N)" ]; then echo "usage: make trace-step N [X Y]   (N = 2 .. 8)"; exit 2; fi
+	@if [ -z "$(filter $(STEP_N),$(PRESENT))" ] || [ "$(STEP_N)" = 01-film ]; then \
+	  echo "make trace-step: there is no step '$(N)' with traces (steps are 2 .. 8)"; exit 2; fi
+	@tools/traces.sh compare $(BUILD) $(STEP_N) $(TRACE_XY)
+
+.PHONY: traces trace-step
