@@ -26,3 +26,16 @@ trace-step: $(TRACE_DIFF) $(if $(filter $(STEP_N),$(PRESENT)),$(BUILD)/bin/$(STE
 	@tools/traces.sh compare $(BUILD) $(STEP_N) $(TRACE_XY)
 
 .PHONY: traces trace-step
+
+# Per-term reference images of the shading steps (images/NN-name.TERM.png):
+# the step's --aov ambient, diffuse and specular at the reference size, with
+# the options of images/NN-name.args like the picture. The image test compares
+# them when the picture is wrong. Part of make images (on purpose only).
+TERM_STEPS := $(filter 04-% 05-% 06-% 07-% 08-%,$(PRESENT))
+term-images: $(BINS)
+	@for s in $(TERM_STEPS); do args=$$(cat images/$$s.args 2>/dev/null); \
+	  for t in ambient diffuse specular; do \
+	    $(BUILD)/bin/$$s $(IMG_SIZE) $$args --threads 2 --quiet --aov $$t \
+	      -o images/$$s.$$t.png || exit 1; done; done
+images: term-images
+.PHONY: term-images
