@@ -39,3 +39,16 @@ term-images: $(BINS)
 	      -o images/$$s.$$t.png || exit 1; done; done
 images: term-images
 .PHONY: term-images
+
+# The tests of --trace and --aov (tests/test_trace.c): they run every step's
+# binary, so they are a test binary of their own, run by make test.
+TRACE_TESTBIN := $(BUILD)/tests/trace
+$(BUILD)/obj/tests/trace/%.o: tests/%.c | $(BUILD)/.deps
+	@mkdir -p $(@D)
+	@echo "CC $<  (trace)"
+	@$(CC) $(CFLAGS) $(PKG_CFLAGS) -Itests -DBUILD_DIR='"$(BUILD)"' -c $< -o $@
+$(TRACE_TESTBIN): $(BUILD)/obj/tests/trace/test_trace.o $(LIBCOMMON) $(BINS)
+	@mkdir -p $(@D)
+	@echo "LD $@"
+	@$(CC) $(CFLAGS) $(LDFLAGS) $(filter %.o %.a,$^) $(LDLIBS) -lcriterion -o $@
+test: $(TRACE_TESTBIN)
