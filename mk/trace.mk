@@ -52,3 +52,34 @@ $(TRACE_TESTBIN): $(BUILD)/obj/tests/trace/test_trace.o $(LIBCOMMON) $(BINS)
 	@echo "LD $@"
 	@$(CC) $(CFLAGS) $(LDFLAGS) $(filter %.o %.a,$^) $(LDLIBS) -lcriterion -o $@
 test: $(TRACE_TESTBIN)
+
+# The report (tools/report.c, its look in tools/report.html): make test and
+# make test-step N write build/report/index.html from the results files and
+# the image tests' pictures.
+REPORT := $(BUILD)/bin/report
+$(REPORT): tools/report.c tools/json.h | $(BUILD)/.deps
+	@mkdir -p $(@D)
+	@echo "CC $<"
+	@$(CC) $(CFLAGS) $< -o $@
+report: $(REPORT)
+	@mkdir -p $(BUILD)/report
+	@$(REPORT) $(BUILD) tools/report.html
+.PHONY: report
+
+# What the Makefile's test and test-step recipes run after the tests (their
+# exit status kept): the report, and for make test the report in a browser
+# (tests/report.sh; chromium is installed when make runs as root, else the
+# browser test says SKIP).
+DEB_REPORT := chromium
+REPORT_AFTER_TEST = mkdir -p $(BUILD)/report && $(REPORT) $(BUILD) tools/report.html && \
+                    tests/report.sh $(BUILD)
+REPORT_AFTER_STEP = mkdir -p $(BUILD)/report && $(REPORT) $(BUILD) tools/report.html $(STEP_N)
+report-deps:
+	-@$(call need_debs,$(DEB_REPORT))
+test: $(REPORT) $(BUILD)/bin/report-check report-deps
+test-step: $(REPORT)
+.PHONY: report-deps
+$(BUILD)/bin/report-check: $(BUILD)/obj/tools/report-check.o $(LIBCOMMON)
+	@mkdir -p $(@D)
+	@echo "LD $@"
+	@$(CC) $(CFLAGS) $(LDFLAGS) $^ $(LDLIBS) -o $@
