@@ -10,7 +10,7 @@ $(TRACE_DIFF): $(BUILD)/obj/tools/trace-diff.o $(LIBCOMMON)
 # The reference traces: the pixels of tests/traces/pixels traced by the
 # solution's binaries (on purpose only, like make images).
 traces: $(BINS)
-	@tools/traces.sh write $(BUILD) $(filter-out 01-film,$(PRESENT))
+	@tools/traces.sh write $(BUILD) $(PRESENT)
 
 # make trace-step N [X Y]: step N's traces against the references, the first
 # line that differs for each pixel (or only pixel X Y).
@@ -20,9 +20,9 @@ ifeq (trace-step,$(firstword $(MAKECMDGOALS)))
   $(foreach w,$(wordlist 2,4,$(MAKECMDGOALS)),$(eval $(w):;@:))
 endif
 trace-step: $(TRACE_DIFF) $(if $(filter $(STEP_N),$(PRESENT)),$(BUILD)/bin/$(STEP_N))
-	@if [ -z "$(N)" ]; then echo "usage: make trace-step N [X Y]   (N = 2 .. 8)"; exit 2; fi
-	@if [ -z "$(filter $(STEP_N),$(PRESENT))" ] || [ "$(STEP_N)" = 01-film ]; then \
-	  echo "make trace-step: there is no step '$(N)' with traces (steps are 2 .. 8)"; exit 2; fi
+	@if [ -z "$(N)" ]; then echo "usage: make trace-step N [X Y]   (N = 1 .. 8)"; exit 2; fi
+	@if [ -z "$(filter $(STEP_N),$(PRESENT))" ]; then \
+	  echo "make trace-step: there is no step '$(N)' (steps are 1 .. 8)"; exit 2; fi
 	@tools/traces.sh compare $(BUILD) $(STEP_N) $(TRACE_XY)
 
 .PHONY: traces trace-step
@@ -83,3 +83,9 @@ $(BUILD)/bin/report-check: $(BUILD)/obj/tools/report-check.o $(LIBCOMMON)
 	@mkdir -p $(@D)
 	@echo "LD $@"
 	@$(CC) $(CFLAGS) $(LDFLAGS) $^ $(LDLIBS) -o $@
+
+# The pictures and trace lines of the step docs' "Seeing the mistake"
+# sections (tools/trace-mistakes.sh; on purpose only, several minutes).
+trace-mistakes: $(BINS)
+	@tools/trace-mistakes.sh $(BUILD)
+.PHONY: trace-mistakes

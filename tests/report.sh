@@ -33,7 +33,7 @@ check() {
     echo "FAIL  report in a browser: $1: chromium wrote no screenshot of $2"; return 1
   fi
   if out=$("$build/bin/report-check" "$2" "$3"); then
-    echo "PASS  report in a browser: $1: ${out#report-check: } (screenshot $3)"
+    echo "PASS  report in a browser: $1: ${out#report-check: }"
   else
     echo "FAIL  report in a browser: $1:"; echo "$out" | sed 's/^/      /'; return 1
   fi
