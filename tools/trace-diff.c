@@ -142,9 +142,11 @@ static void show(const char *label, const TraceLine *line, int field)
 {
   char text[TEXT];
   TraceLine only = *line;
-  if (field >= 0) { /* that field alone */
-    only.n_fields = 1;
-    only.f[0] = line->f[field];
+  if (field >= 0) { /* that field alone, after the instance it is about */
+    only.n_fields = 0;
+    for (int k = 0; k < line->n_fields; k++)
+      if (k == field || (k < field && !strcmp(line->f[k].name, "id")))
+        only.f[only.n_fields++] = line->f[k];
     only.depth = 0;
   }
   trace_line_text(&only, text, sizeof text);

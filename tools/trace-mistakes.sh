@@ -40,8 +40,8 @@ mistakes | while IFS='|' read -r step file expr pixel aov; do
   (cd "$scratch" && tools/traces.sh compare build "$step" "$x" "$y") || true
   name=docs/img/${step%%-*}-mistake
   if [ -n "$aov" ]; then
-    "$scratch/build/bin/$step" $size --aov "$aov" -o "$name.$aov.png"
-    "$build/bin/$step" $size --aov "$aov" -o "$name.right.$aov.png"
+    "$scratch/build/bin/$step" $size --aov "$aov" -o "$name.$aov.png" 2>/dev/null
+    "$build/bin/$step" $size --aov "$aov" -o "$name.right.$aov.png" 2>/dev/null
   else
     "$scratch/build/bin/$step" --threads 2 --quiet -o "$name.png"
   fi

@@ -158,6 +158,7 @@ void trace_flush_rays(Trace *t, int depth)
 static void on_hit(Trace *t, const TraceEvent *e)
 {
   t->lit = e->inst->material >= 0;
+  t->light_shape = e->inst->light;
   t->n = e->n;
   if (t->mode == TRACE_AOV)
     aov_camera_hit(t, e);
@@ -228,13 +229,17 @@ static void on_light(Trace *t, const TraceEvent *e)
   TraceLine *line = trace_add(&t->lines, depth, key, TRACE_DOC_LIGHT);
   trace_vec(line, "l", e->l);
   trace_num(line, "n.l", glms_vec3_dot(t->n, e->l));
-  trace_vec(line, "L_i", e->li);
-  if (t->compact) { /* the shadow ray's answer on the same line */
+  /* The shadow ray before L_i (zero when it is blocked): a wrong shadow ray
+   * is the first line that differs, not its consequence. */
+  if (t->compact) { /* its answer on the same line */
     const TraceLine *ray = t->rays.n ? &t->rays.line[t->rays.n - 1] : NULL;
     trace_word(line, "occluder", ray ? ray->f[ray->n_fields - 1].word : "no ray");
+    trace_vec(line, "L_i", e->li);
     t->rays.n = t->rays_blocked = 0;
+  } else {
+    trace_flush_rays(t, depth + 1);
+    trace_vec(trace_add(&t->lines, depth + 1, "L_i", TRACE_DOC_LIGHT), "rgb", e->li);
   }
-  trace_flush_rays(t, depth + 1);
   light_terms(t, at < t->lines.n ? &t->lines.line[at] : NULL, e, depth + 1);
 }
 
@@ -339,6 +344,7 @@ void trace_begin_pixel(Trace *t)
   t->camera_next = true;
   t->camera_rays = 0;
   t->lit = false;
+  t->light_shape = -1;
   t->sum = (FilmAccum){0};
   t->shadow_rays = t->shadow_clear = 0;
 }

@@ -29,7 +29,11 @@ static void end_pixel(Trace *t, const Scene *scene, const TraceRequest *req,
     trace_vec(trace_add(&t->lines, 0, aov_name((AovKind)(AOV_AMBIENT + k)),
                         k == TERM_AMBIENT ? TRACE_DOC_AMBIENT : TRACE_DOC_LIGHT),
               "rgb", term[k]);
-  trace_vec(trace_add(&t->lines, 0, "colour", TRACE_DOC_FILM), "rgb", c);
+  const char *doc = TRACE_DOC_FILM; /* a light's own shape: its colour is the lesson */
+  if (!t->compact && t->light_shape >= 0)
+    doc = scene->lights[t->light_shape].type == LIGHT_AREA ? TRACE_DOC_AREA_SHAPE
+                                                          : TRACE_DOC_LIGHT_SHAPE;
+  trace_vec(trace_add(&t->lines, 0, "colour", doc), "rgb", c);
   TraceLine *line = trace_add(&t->lines, 0, "byte", TRACE_DOC_FILM);
   vec3s bytes;
   for (int k = 0; k < 3; k++)

@@ -27,6 +27,8 @@ typedef struct TraceIndex {
 #define TRACE_DOC_AMBIENT "docs/06-ambient.md, \"The math\""
 #define TRACE_DOC_SAMPLE "docs/07-antialiasing.md, \"The math\""
 #define TRACE_DOC_AREA "docs/08-area-lights.md, \"The estimate: N point lights\""
+#define TRACE_DOC_LIGHT_SHAPE "docs/06-ambient.md, \"Lights the camera sees\""
+#define TRACE_DOC_AREA_SHAPE "docs/08-area-lights.md, \"The light\""
 
 /* What a recorder does with what the hooks report. */
 typedef enum TraceMode {
@@ -63,6 +65,7 @@ struct Trace {
   int camera_rays;     /* camera rays of this pixel */
   uint32_t sample;     /* ctx->sample of the last camera ray */
   bool lit;            /* the last camera ray hit a lit shape */
+  int light_shape;     /* or the shape of this light, else -1 */
   vec3s n;             /* the normal there */
   TraceLines lines;    /* what --trace prints */
   TraceLines rays;     /* shadow rays not yet shown under their light */
