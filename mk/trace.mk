@@ -1,5 +1,6 @@
-# Looking inside a pixel (README.md, "For students"; docs/testing.md,
-# "Traces"): the reference traces and `make trace-step N [X Y]`.
+# Looking inside a pixel (README.md, "For students"; docs/tracing.md): the
+# tracer's tests, the reference traces and make trace-step N [X Y], the
+# per-term reference images, the report and its check in a browser.
 
 TRACE_DIFF := $(BUILD)/bin/trace-diff
 $(TRACE_DIFF): $(BUILD)/obj/tools/trace-diff.o $(LIBCOMMON)

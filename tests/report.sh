@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The report in a real browser (docs/testing.md, "The report"), run by make
+# The report in a real browser (docs/tracing.md, "The report"), run by make
 # test after it writes BUILD/report/index.html. Headless Chromium renders two
 # reports to screenshots and tools/report-check.c finds every picture of the
 # page in them (a missing or broken picture shows as a small icon instead):

@@ -3,7 +3,7 @@
  * details tools/report.c reads), and, when the picture is wrong, the Phong
  * terms compared one by one (--aov TERM against images/STEP.TERM.png): which
  * differs most, where, and the --trace command for that pixel.
- * docs/testing.md, "The image test"; README.md, "For students". */
+ * docs/tracing.md; README.md, "For students". */
 #ifndef RT_TERMS_H
 #define RT_TERMS_H
 

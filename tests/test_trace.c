@@ -2,7 +2,7 @@
  * binaries: the traced pixel is the rendered pixel, the terms add up to it,
  * the pictures of quantities match what the steps draw. They test the
  * tracer, whatever the steps' code: they pass in the starter too.
- * README.md, "For students"; docs/testing.md, "Traces". */
+ * README.md, "For students"; docs/tracing.md. */
 #include "check.h"
 
 #include <stdlib.h>

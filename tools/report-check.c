@@ -2,7 +2,7 @@
  * Each <img src> of the page must appear in the screenshot pixel for pixel
  * (within 2/255 per channel), at its own size: a broken-image icon, a
  * missing file or a picture that failed to decode does not. tests/report.sh
- * runs it on headless Chromium's screenshot; docs/testing.md, "The report".
+ * runs it on headless Chromium's screenshot; docs/tracing.md, "The report".
  *
  * usage: report-check PAGE.html SCREENSHOT.png
  * Exit status: 0 every picture is shown, 1 some is not, 2 bad input. */

@@ -3,7 +3,7 @@
  * solution). Runs the step's binary with the reference's options, reads both
  * JSON traces line by line and prints the first line whose values differ
  * beyond the tolerance, both values and the doc section to read. `make
- * trace-step N` runs it; docs/testing.md, "Traces".
+ * trace-step N` runs it; docs/tracing.md.
  *
  * usage: trace-diff [--tol REL ABS] BIN REF.json [WHAT]
  * Exit status: 0 the traces agree, 1 they differ, 2 bad usage or files. */

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# The reference traces (tests/traces/pixels lists the pixels; docs/testing.md,
-# "Traces").
+# The reference traces (tests/traces/pixels lists the pixels; docs/tracing.md,
+# "Reference traces").
 #   tools/traces.sh write BUILD STEP...        rewrite tests/traces/STEP/X_Y.json
 #   tools/traces.sh compare BUILD STEP [X Y]   the step's traces against them,
 #                                              the first differing line of each

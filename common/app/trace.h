@@ -2,7 +2,7 @@
  * the step computes for one pixel (rays, hits, lights, terms), `--aov NAME`
  * (common/app/aov.c) draws one of those quantities for every pixel. Both run
  * the step's own functions; off, each hook below costs one branch.
- * README.md, "For students"; docs/testing.md, "Traces". */
+ * README.md, "For students"; docs/tracing.md. */
 #ifndef RT_TRACE_H
 #define RT_TRACE_H
 
@@ -65,8 +65,8 @@ typedef struct TraceEvents {
  * branch on ctx->trace (NULL unless --trace or --aov is given). A hook only
  * stores the values it is given into ctx->trace, one by one, and hands back
  * its last argument: no call and no copy of a whole struct, so that the
- * render around it compiles as it would without it (docs/testing.md,
- * "Traces", measures it). */
+ * render around it compiles as it would without it (docs/tracing.md,
+ * "What it costs when off", measures it). */
 static inline TraceEvent *trace_slot(RenderCtx *ctx, TraceEventKind kind)
 {
   TraceEvents *ev = ctx->trace;
