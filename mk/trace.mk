@@ -1,6 +1,7 @@
 # Looking inside a pixel (README.md, "For students"; docs/tracing.md): the
 # tracer's tests, the reference traces and make trace-step N [X Y], the
-# per-term reference images, the report and its check in a browser.
+# report and its check in a browser. (The per-term reference images are
+# tools/images.sh's.)
 
 TRACE_DIFF := $(BUILD)/bin/trace-diff
 $(TRACE_DIFF): $(BUILD)/obj/tools/trace-diff.o $(LIBCOMMON)
@@ -27,19 +28,6 @@ trace-step: $(TRACE_DIFF) $(if $(filter $(STEP_N),$(PRESENT)),$(BUILD)/bin/$(STE
 	@tools/traces.sh compare $(BUILD) $(STEP_N) $(TRACE_XY)
 
 .PHONY: traces trace-step
-
-# Per-term reference images of the shading steps (images/NN-name.TERM.png):
-# the step's --aov ambient, diffuse and specular at the reference size, with
-# the options of images/NN-name.args like the picture. The image test compares
-# them when the picture is wrong. Part of make images (on purpose only).
-TERM_STEPS := $(filter 04-% 05-% 06-% 07-% 08-%,$(PRESENT))
-term-images: $(BINS)
-	@for s in $(TERM_STEPS); do args=$$(cat images/$$s.args 2>/dev/null); \
-	  for t in ambient diffuse specular; do \
-	    $(BUILD)/bin/$$s $(IMG_SIZE) $$args --threads 2 --quiet --aov $$t \
-	      -o images/$$s.$$t.png || exit 1; done; done
-images: term-images
-.PHONY: term-images
 
 # The tests of --trace and --aov (tests/test_trace.c): they run every step's
 # binary, so they are a test binary of their own, run by make test.
