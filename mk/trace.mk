@@ -27,7 +27,16 @@ trace-step: $(TRACE_DIFF) $(if $(filter $(STEP_N),$(PRESENT)),$(BUILD)/bin/$(STE
 	  echo "make trace-step: there is no step '$(N)' (steps are 1 .. 8)"; exit 2; fi
 	@tools/traces.sh compare $(BUILD) $(STEP_N) $(TRACE_XY)
 
-.PHONY: traces trace-step
+# CI: the solution's traces are the references (make traces after a change
+# that moves them on purpose).
+check-traces: $(TRACE_DIFF) $(BINS)
+	@status=0; for s in $(PRESENT); do \
+	  tools/traces.sh compare $(BUILD) $$s > $(BUILD)/check-traces.log 2>&1 || { \
+	    cat $(BUILD)/check-traces.log; status=1; }; done; \
+	[ $$status = 0 ] && echo "check-traces: every reference trace agrees with the solution"; \
+	exit $$status
+
+.PHONY: traces trace-step check-traces
 
 # The tests of --trace and --aov (tests/test_trace.c): they run every step's
 # binary, so they are a test binary of their own, run by make test.
