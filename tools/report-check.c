@@ -92,14 +92,12 @@ int main(int argc, char **argv)
       snprintf(seen[n++], sizeof seen[0], "%s", src);
       char path[800];
       snprintf(path, sizeof path, "%s%s", dir, src);
-      Picture pic;
-      bool ok = load(path, &pic) && shown(&shot, &pic);
-      if (!ok) {
+      Picture pic = {0};
+      if (!(load(path, &pic) && shown(&shot, &pic))) {
         printf("report-check: %s is not shown in %s\n", src, argv[2]);
         missing++;
       }
-      if (ok)
-        free(pic.px);
+      free(pic.px);
     }
   fclose(f);
   printf("report-check: %d of %d pictures of %s shown in %s\n", n - missing, n, argv[1],
