@@ -169,7 +169,8 @@ $(BUILD)/tests/stress: $(STRESS_OBJ) $(LIBCOMMON)
 STRESSBIN := $(if $(STRESS_TESTS),$(BUILD)/tests/stress)
 
 test: $(TESTBIN) $(STRESSBIN) $(BUILD)/bin/04-phong $(BUILD)/bin/05-shadows $(BUILD)/bin/mistakes
-	@tests/run.sh $(TESTBIN) $(STRESSBIN)
+	@tests/run.sh $(TESTBIN) $(STRESSBIN) $(TRACE_TESTBIN); status=$$?; \
+	  $(REPORT_AFTER_TEST) || status=1; exit $$status
 
 # The stress tests render through steps 04, 05 and tools/mistakes.c (docs/accuracy.md).
 stress: $(STRESSBIN) $(BUILD)/bin/04-phong $(BUILD)/bin/05-shadows $(BUILD)/bin/mistakes
@@ -189,7 +190,8 @@ test-step:
 	@if [ -z "$(filter $(STEP_N),$(PRESENT))" ]; then \
 	  echo "make test-step: step $(STEP_N) does not exist yet (no steps/$(STEP_N)/)"; exit 1; fi
 	@$(MAKE) --no-print-directory $(BUILD)/tests/$(STEP_N)
-	@tests/run.sh --verbose $(BUILD)/tests/$(STEP_N)
+	@tests/run.sh --verbose $(BUILD)/tests/$(STEP_N); status=$$?; \
+	  $(REPORT_AFTER_STEP); exit $$status
 
 sanitize:
 	$(MAKE) BUILD=build/san SAN=1 OPT=-O1 test

@@ -27,6 +27,7 @@
 #include <stb_image.h>
 
 #include "app/image.h"
+#include "terms.h"
 
 #define REF_PATH "images/" STEP_NAME ".png"
 #define OUT_DIR BUILD_DIR "/test-out"
@@ -171,6 +172,10 @@ Test(reference_image, render_matches_the_reference, .timeout = 300)
   } else {
     remove(DIFF_PATH); /* no stale picture from an earlier failure */
   }
+  char terms[2048], args[256];
+  step_args(args, sizeof args);
+  terms_after_image_test(w, h, out, ref, t.tol, t.fraction, t.max, pass, args, terms,
+                         sizeof terms);
   cr_log_info("%s: %dx%d, %ld of %zu channels over %.2f/255 (%.4f%%, allowed %.4f%%), "
               "max %.2f/255 (allowed %.2f/255), rmse %.3f/255", STEP_NAME, w, h,
               d.over, n, t.tol, 100.0 * over, 100.0 * t.fraction,
@@ -183,12 +188,13 @@ Test(reference_image, render_matches_the_reference, .timeout = 300)
              "the render of %s differs from %s\n"
              "  %ld of %zu channels (%.2f%%) differ by more than %.1f/255 (allowed %.2f%%)\n"
              "  largest difference %.1f/255 (allowed %.0f/255), rmse %.2f/255\n"
-             "  diff picture: %s (red: over the tolerance)%s%s%s",
+             "  diff picture: %s (red: over the tolerance)%s%s%s%s%s",
              STEP_NAME, REF_PATH, d.over, n, 100.0 * over, t.tol, 100.0 * t.fraction,
              255.0 * d.max_abs, t.max, 255.0 * d.rmse, DIFF_PATH,
              earlier[0] ? "\n  the picture also goes through the earlier steps' " : "",
              earlier[0] ? earlier : "",
-             earlier[0] ? ": when their unit tests fail too, fix those first" : "");
+             earlier[0] ? ": when their unit tests fail too, fix those first" : "",
+             terms[0] ? "\n" : "", terms);
   free(ref);
   free(out);
 }

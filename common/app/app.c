@@ -6,9 +6,11 @@
 #include <string.h>
 
 #include "accel/accel.h"
+#include "app/aov.h"
 #include "app/cli.h"
 #include "app/image.h"
 #include "app/parser.h"
+#include "app/trace.h"
 #include "sampler.h"
 
 /* Say once what the step leaves out of this scene or command line. */
@@ -73,6 +75,76 @@ static void summary(const Step *step, const char *out, const Film *film,
          st->threads == 1 ? "" : "s");
 }
 
+/* The command line's options other than --trace, --trace-format and --quiet,
+ * as one string (the header of a JSON trace: how to trace the pixel again). */
+static void other_args(int argc, char **argv, char *buf, size_t size)
+{
+  size_t len = 0;
+  buf[0] = '\0';
+  for (int k = 1; k < argc; k++) {
+    const char *a = argv[k];
+    if (!strcmp(a, "--trace") || !strcmp(a, "--trace-format")) {
+      k += a[7] ? 1 : 2;
+      continue;
+    }
+    if (!strncmp(a, "--trace-format=", 15) || !strcmp(a, "-q") || !strcmp(a, "--quiet"))
+      continue;
+    int n = snprintf(buf + len, size - len, "%s%s", len ? " " : "", a);
+    if (n < 0 || (size_t)n >= size - len)
+      return;
+    len += (size_t)n;
+  }
+}
+
+/* --trace X Y: one pixel's trace on stdout instead of a picture. */
+static int run_trace(int argc, char **argv, const Step *step, const Options *o,
+                     const Scene *scene, const RenderSettings *set)
+{
+  if (o->out_path)
+    fprintf(stderr, "%s: ignoring -o (--trace prints one pixel, writes no image)\n",
+            step->name);
+  char args[1024];
+  other_args(argc, argv, args, sizeof args);
+  TraceRequest req = {.step = step->name, .features = step->features, .pixel = step->pixel,
+                      .x = o->trace_x, .y = o->trace_y, .tonemap = o->tonemap,
+                      .json = o->trace_json, .args = args};
+  if (trace_pixel(scene, set, &req, stdout))
+    return 0;
+  return o->trace_x < scene->width && o->trace_y < scene->height ? 1 : 2;
+}
+
+/* Render the picture, or with --aov the quantity, and save it to `out`. */
+static bool render_and_save(const Step *step, const Options *o, const Scene *scene,
+                            const RenderSettings *set, Film *film, const char *out)
+{
+  RenderStats st;
+  Tonemap tm = o->tonemap;
+  if (o->aov < 0) {
+    render(scene, film, step->pixel, set, &st);
+  } else {
+    if (!aov_render(scene, step->pixel, set, (AovKind)o->aov, film, &st))
+      return false;
+    if (aov_file_is_bytes(out))
+      aov_for_bytes((AovKind)o->aov, scene->samples, film);
+    tm = TONEMAP_CLAMP;
+  }
+  if (!image_save(out, film->width, film->height, film->rgb, tm))
+    return false;
+  if (!o->quiet)
+    summary(step, out, film, scene, &st);
+  return true;
+}
+
+/* An --aov the step cannot draw: the Phong terms need lights (step 04). */
+static bool aov_usable(const Step *step, const Options *o)
+{
+  if (o->aov < 0 || aov_term(o->aov) < 0 || (step->features & SCENE_LIGHTS))
+    return true;
+  fprintf(stderr, "%s: --aov %s: expected a step that shades (04 to 08); the Phong terms "
+          "start in step 04\n", step->name, aov_name((AovKind)o->aov));
+  return false;
+}
+
 int app_run(int argc, char **argv, const Step *step)
 {
   Options o;
@@ -81,7 +153,8 @@ int app_run(int argc, char **argv, const Step *step)
   case CLI_USAGE: return 2;
   case CLI_RUN: break;
   }
-  if (o.out_path && !image_format_known(o.out_path))
+  if ((o.out_path && o.trace_x < 0 && !image_format_known(o.out_path)) ||
+      !aov_usable(step, &o))
     return 2;
   Scene scene;
   if (!load(step, &o, &scene))
@@ -102,19 +175,20 @@ int app_run(int argc, char **argv, const Step *step)
                         .light_samples = scene.light_samples, .sampler = (int)kind,
                         .adaptive = o.adaptive >= 0.0f ? o.adaptive : step->adaptive,
                         .progress = !o.quiet};
+  if (o.trace_x >= 0) {
+    int status = run_trace(argc, argv, step, &o, &scene, &set);
+    scene_free(&scene);
+    return status;
+  }
   Film film;
   char default_out[96];
-  snprintf(default_out, sizeof default_out, "%s.png", step->name);
+  snprintf(default_out, sizeof default_out, o.aov < 0 ? "%s.png" : "%s.%s.png", step->name,
+           o.aov < 0 ? "" : aov_name((AovKind)o.aov));
   const char *out = o.out_path ? o.out_path : default_out;
   int status = 1;
   if (film_init(&film, scene.width, scene.height)) {
-    RenderStats st;
-    render(&scene, &film, step->pixel, &set, &st);
-    if (image_save(out, film.width, film.height, film.rgb, o.tonemap)) {
+    if (render_and_save(step, &o, &scene, &set, &film, out))
       status = 0;
-      if (!o.quiet)
-        summary(step, out, &film, &scene, &st);
-    }
     film_free(&film);
   }
   scene_free(&scene);

@@ -4,7 +4,7 @@
 #ifndef RT_APP_H
 #define RT_APP_H
 
-#include "app/render.h"
+#include "app/trace.h"
 
 typedef struct Step {
   const char *name;      /* "04-phong" */

@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "film.h"
+#include "app/aov.h"
 #include "app/render.h"
 #include "sampler.h"
 #include "scene.h"
@@ -29,6 +30,15 @@ static void usage(const char *prog, const char *summary, const char *scene)
          "  --seed S            random seed, 0..4294967295 (default 1)\n"
          "  --tonemap NAME      clamp (default), srgb or reinhard\n"
          "  -q, --quiet         no progress bar and no summary line\n"
+         "  --trace X Y         render pixel (X, Y) alone and print what the step computes\n"
+         "                      for it (from step 02: rays, hits, lights, terms); X from\n"
+         "                      the left, Y from the top, as an image viewer shows the\n"
+         "                      picture; no image is written\n"
+         "  --trace-format F    text (default) or json\n"
+         "  --aov NAME          draw one quantity instead of the colour: normal, depth,\n"
+         "                      albedo, ambient, diffuse, specular, shadow or samples\n"
+         "                      (default output: STEP.NAME.png; depth and samples are\n"
+         "                      raw in .pfm/.hdr, scaled to [0, 1] in .png/.jpg)\n"
          "  -h, --help          show this text\n"
          "Values follow the option (--width 400) or an '=' (--width=400).\n\n"
          "Exit status: 0 done, 1 bad scene or failed render or write, 2 bad usage.\n",
@@ -89,6 +99,16 @@ static bool apply(const char *prog, const char *opt, const char *val, Options *o
   } else if (!strcmp(opt, "--tonemap")) {
     if (!image_tonemap_parse(val, &o->tonemap))
       return bad(prog, opt, val, "clamp, srgb or reinhard");
+  } else if (!strcmp(opt, "--trace-format")) {
+    if (strcmp(val, "text") && strcmp(val, "json"))
+      return bad(prog, opt, val, "text or json");
+    o->trace_json = !strcmp(val, "json");
+  } else if (!strcmp(opt, "--aov")) {
+    AovKind aov;
+    if (!aov_parse(val, &aov))
+      return bad(prog, opt, val, "normal, depth, albedo, ambient, diffuse, specular, "
+                 "shadow or samples");
+    o->aov = (int)aov;
   } else if (!strcmp(opt, "--adaptive")) {
     char *end;
     float t = strtof(val, &end);
@@ -107,7 +127,8 @@ static bool takes_value(const char *opt)
 {
   static const char *const with_value[] = {
       "--scene", "-o", "--output", "--width", "--height", "--samples",
-      "--light-samples", "--threads", "--seed", "--sampler", "--tonemap", "--adaptive"};
+      "--light-samples", "--threads", "--seed", "--sampler", "--tonemap", "--adaptive",
+      "--trace-format", "--aov"};
   for (size_t k = 0; k < sizeof with_value / sizeof with_value[0]; k++)
     if (strcmp(opt, with_value[k]) == 0)
       return true;
@@ -117,7 +138,8 @@ static bool takes_value(const char *opt)
 CliResult cli_parse(int argc, char **argv, const char *prog, const char *summary,
                     const char *default_scene, Options *o)
 {
-  *o = (Options){.seed = 1, .tonemap = TONEMAP_CLAMP, .adaptive = -1.0f};
+  *o = (Options){.seed = 1, .tonemap = TONEMAP_CLAMP, .adaptive = -1.0f, .trace_x = -1,
+                 .trace_y = -1, .aov = -1};
   for (int k = 1; k < argc; k++) {
     char opt[32];
     const char *arg = argv[k], *eq = strchr(arg, '='), *val;
@@ -127,6 +149,21 @@ CliResult cli_parse(int argc, char **argv, const char *prog, const char *summary
     }
     if (!strcmp(arg, "--quiet") || !strcmp(arg, "-q")) {
       o->quiet = true;
+      continue;
+    }
+    if (!strcmp(arg, "--trace")) { /* two values: X Y */
+      long x, y;
+      if (k + 2 >= argc) {
+        fprintf(stderr, "%s: --trace: expected X Y, found the end of the command line "
+                "(try --help)\n", prog);
+        return CLI_USAGE;
+      }
+      if (!parse_int(prog, "--trace X", argv[k + 1], 0, FILM_MAX_SIDE - 1, &x) ||
+          !parse_int(prog, "--trace Y", argv[k + 2], 0, FILM_MAX_SIDE - 1, &y))
+        return CLI_USAGE;
+      o->trace_x = (int)x;
+      o->trace_y = (int)y;
+      k += 2;
       continue;
     }
     if (arg[0] != '-') {
@@ -151,6 +188,11 @@ CliResult cli_parse(int argc, char **argv, const char *prog, const char *summary
     }
     if (!apply(prog, opt, val, o))
       return CLI_USAGE;
+  }
+  if (o->trace_x >= 0 && o->aov >= 0) {
+    fprintf(stderr, "%s: --trace and --aov: expected one of them, found both (try --help)\n",
+            prog);
+    return CLI_USAGE;
   }
   return CLI_RUN;
 }

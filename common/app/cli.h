@@ -19,6 +19,9 @@ typedef struct Options {
   Tonemap tonemap;        /* default clamp */
   float adaptive;         /* < 0: not given */
   bool quiet;
+  int trace_x, trace_y;   /* --trace X Y (X from the left, Y from the top); -1: off */
+  bool trace_json;        /* --trace-format json */
+  int aov;                /* --aov NAME as an AovKind; -1: off */
 } Options;
 
 typedef enum CliResult {

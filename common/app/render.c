@@ -34,12 +34,16 @@ static void render_tile(const Scene *scene, Film *film, RenderPixelFn pixel,
     }
 }
 
+int render_threads(const RenderSettings *set)
+{
+  int threads = set->threads > 0 ? set->threads : omp_get_max_threads();
+  return threads < RENDER_MAX_THREADS ? threads : RENDER_MAX_THREADS;
+}
+
 void render(const Scene *scene, Film *film, RenderPixelFn pixel,
             const RenderSettings *set, RenderStats *stats)
 {
-  int threads = set->threads > 0 ? set->threads : omp_get_max_threads();
-  if (threads > RENDER_MAX_THREADS)
-    threads = RENDER_MAX_THREADS;
+  int threads = render_threads(set);
   int tiles_x = (film->width + TILE - 1) / TILE;
   int tiles = tiles_x * ((film->height + TILE - 1) / TILE);
   bool progress = set->progress && isatty(STDERR_FILENO);
@@ -52,6 +56,7 @@ void render(const Scene *scene, Film *film, RenderPixelFn pixel,
   {
     RenderCtx *mine = &ctx[omp_get_thread_num()];
     mine->set = set;
+    mine->trace = set->traces ? set->traces[omp_get_thread_num()] : NULL;
 #pragma omp for schedule(dynamic, 1)
     for (int tile = 0; tile < tiles; tile++) {
       render_tile(scene, film, pixel, tile, tiles_x, mine);

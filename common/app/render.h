@@ -20,6 +20,7 @@ typedef struct RenderSettings {
   int sampler;        /* sampling pattern (step 07's SamplerKind) */
   float adaptive;     /* adaptive sampling threshold, 0 = off (steps 07, 08) */
   bool progress;      /* draw a progress bar on stderr */
+  struct TraceEvents **traces; /* --aov: one per thread (ctx->trace), else NULL */
 } RenderSettings;
 
 /* Per-thread state handed to the pixel function. */
@@ -30,7 +31,9 @@ typedef struct RenderCtx {
   uint32_t pixel;     /* j * width + i of the pixel being rendered */
   uint32_t sample;    /* index of the camera sample being traced (steps 07-08
                        * set it; shading keys its random numbers on both) */
-  char pad[32];       /* keep threads' counters on separate cache lines */
+  struct TraceEvents *trace; /* --trace, --aov: where the hooks of
+                              * common/app/trace.h write; NULL when off */
+  char pad[24];       /* keep threads' counters on separate cache lines */
 } RenderCtx;
 
 /* A step's per-pixel work: the colour of pixel (i, j) (i from the left, j from
@@ -43,6 +46,9 @@ typedef struct RenderStats {
   uint64_t rays, samples;
   int threads;
 } RenderStats;
+
+/* The number of threads render() runs with these settings. */
+int render_threads(const RenderSettings *set);
 
 /* Fill every pixel of `film` with `pixel`. */
 void render(const Scene *scene, Film *film, RenderPixelFn pixel,

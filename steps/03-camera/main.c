@@ -10,6 +10,7 @@ static vec3s pixel(const Scene *scene, const Film *film, int i, int j, RenderCtx
   ctx->rays++;
   if (!scene_intersect(scene, r, INFINITY, &hit))
     return scene->background;
+  trace_hit(ctx, &hit);
   return scene->materials[hit.inst->material].diffuse;
 }
 

@@ -2,6 +2,8 @@
  * lecture's "version 0"). docs/04-phong.md. */
 #include "shade.h"
 
+#include "app/trace.h"
+
 vec3s shade_incident(const Scene *scene, const Light *light, const Hit *hit,
                      vec3s *l, RenderCtx *ctx)
 {
@@ -35,7 +37,8 @@ static vec3s shade_light(const Scene *scene, int k, const Hit *hit, vec3s v, Ren
 {
   vec3s l;
   vec3s li = shade_incident(scene, &scene->lights[k], hit, &l, ctx);
-  return shade_phong_light(&scene->materials[hit->inst->material], hit, v, li, l);
+  vec3s c = shade_phong_light(&scene->materials[hit->inst->material], hit, v, li, l);
+  return trace_light(ctx, k, li, l, c);
 }
 
 vec3s shade_phong(const Scene *scene, const Hit *hit, vec3s eye, RenderCtx *ctx)
@@ -55,5 +58,6 @@ vec3s shade_trace(const Scene *scene, Ray ray, RenderCtx *ctx)
   ctx->rays++;
   if (!scene_intersect(scene, ray, INFINITY, &hit))
     return scene->background;
+  trace_hit(ctx, &hit);
   return shade_phong(scene, &hit, ray.o, ctx);
 }

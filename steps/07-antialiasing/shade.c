@@ -2,6 +2,8 @@
  * docs/06-ambient.md explains it. */
 #include "shade.h"
 
+#include "app/trace.h"
+
 bool shade_visible(const Scene *scene, const Hit *hit, vec3s l, float dist, RenderCtx *ctx)
 {
   ctx->rays += !scene->no_occluders; /* a shadow ray, unless none is needed */
@@ -51,7 +53,8 @@ static vec3s shade_light(const Scene *scene, int k, const Hit *hit, vec3s v, Ren
 {
   vec3s l;
   vec3s li = shade_incident(scene, &scene->lights[k], hit, &l, ctx);
-  return shade_phong_light(&scene->materials[hit->inst->material], hit, v, li, l);
+  vec3s c = shade_phong_light(&scene->materials[hit->inst->material], hit, v, li, l);
+  return trace_light(ctx, k, li, l, c);
 }
 
 vec3s shade_phong(const Scene *scene, const Hit *hit, vec3s eye, RenderCtx *ctx)
@@ -77,6 +80,7 @@ vec3s shade_trace(const Scene *scene, Ray ray, RenderCtx *ctx)
   ctx->rays++;
   if (!scene_intersect(scene, ray, INFINITY, &hit))
     return scene->background;
+  trace_hit(ctx, &hit);
   /* BEGIN SOLUTION step 06 */
   /* HINT: complete shade_trace: a point light's sphere shows P / t^2 */
   if (hit.inst->light >= 0) {

@@ -4,6 +4,7 @@
 #include "shade.h"
 
 #include "accel/accel.h"
+#include "app/trace.h"
 #include "rng.h"
 #include "sampler.h"
 
@@ -117,7 +118,7 @@ vec3s shade_area(const Scene *scene, int light_index, const Hit *hit, vec3s v,
       c = glms_vec3_add(c, shade_phong_light(m, hit, v, li, l));
   }
   /* END SOLUTION */
-  return c;
+  return trace_area(ctx, light_index, scene->no_occluders, c);
 }
 
 /* One light's term at the hit point seen from the direction v. */
@@ -137,7 +138,8 @@ static vec3s shade_light(const Scene *scene, int k, const Hit *hit, vec3s v, Ren
   }
   vec3s l;
   vec3s li = shade_incident(scene, &scene->lights[k], hit, &l, ctx);
-  return shade_phong_light(&scene->materials[hit->inst->material], hit, v, li, l);
+  vec3s c = shade_phong_light(&scene->materials[hit->inst->material], hit, v, li, l);
+  return trace_light(ctx, k, li, l, c);
 }
 
 vec3s shade_phong(const Scene *scene, const Hit *hit, vec3s eye, RenderCtx *ctx)
@@ -163,6 +165,7 @@ vec3s shade_trace(const Scene *scene, Ray ray, RenderCtx *ctx)
   ctx->rays++;
   if (!scene_intersect(scene, ray, INFINITY, &hit))
     return scene->background;
+  trace_hit(ctx, &hit);
   /* BEGIN SOLUTION step 08 */
   /* HINT: complete shade_trace: an area light shows P / A in front, black behind */
   if (hit.inst->light >= 0 && scene->lights[hit.inst->light].type == LIGHT_AREA) {

@@ -1,0 +1,149 @@
+/* --aov NAME (common/app/aov.h): the step's pixel function renders every
+ * pixel as usual, with a recorder per thread (common/app/trace.c) that sums
+ * the quantity over the pixel's camera samples. README.md, "For students". */
+#include "app/aov.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "app/trace_state.h"
+
+static const char *const NAMES[AOV_COUNT] = {"normal", "depth", "albedo", "ambient",
+                                             "diffuse", "specular", "shadow", "samples"};
+
+bool aov_parse(const char *name, AovKind *out)
+{
+  for (int k = 0; k < AOV_COUNT; k++)
+    if (!strcmp(name, NAMES[k])) {
+      *out = (AovKind)k;
+      return true;
+    }
+  return false;
+}
+
+const char *aov_name(AovKind aov)
+{
+  return NAMES[aov];
+}
+
+int aov_term(int aov)
+{
+  return aov >= AOV_AMBIENT && aov <= AOV_SPECULAR ? aov - AOV_AMBIENT : -1;
+}
+
+void aov_camera_hit(Trace *t, const TraceEvent *hit)
+{
+  vec3s v = glms_vec3_zero();
+  switch ((AovKind)t->aov) {
+  case AOV_DEPTH: /* the mean over the samples that hit */
+    if (hit)
+      film_accum_add(&t->sum, glms_vec3_broadcast(hit->t));
+    return;
+  case AOV_NORMAL:
+    if (hit)
+      v = glms_vec3_scale(glms_vec3_adds(hit->n, 1.0f), 0.5f);
+    break;
+  case AOV_ALBEDO:
+    if (hit && hit->inst->material >= 0)
+      v = t->plain.materials[hit->inst->material].diffuse;
+    break;
+  default: return;
+  }
+  film_accum_add(&t->sum, v);
+}
+
+/* The pixel as usual, through the recorder; its value is the quantity. */
+static vec3s aov_pixel(const Scene *scene, const Film *film, int i, int j, RenderCtx *ctx)
+{
+  (void)scene;
+  Trace *t = (Trace *)ctx->trace; /* events are its first member */
+  trace_begin_pixel(t);
+  t->ctx = ctx;
+  t->pixel(&t->scene, film, i, j, ctx);
+  trace_drain(t);
+  switch ((AovKind)t->aov) {
+  case AOV_SHADOW:
+    return glms_vec3_broadcast(t->shadow_rays ? (float)t->shadow_clear / (float)t->shadow_rays
+                                              : 1.0f);
+  case AOV_SAMPLES: return glms_vec3_broadcast((float)t->camera_rays);
+  default: return t->sum.n ? film_accum_mean(&t->sum) : glms_vec3_zero();
+  }
+}
+
+/* One recorder per thread, for `aov`; NULL (one line printed) when out of
+ * memory. */
+static Trace **recorders(const Scene *scene, RenderPixelFn pixel, AovKind aov, int threads)
+{
+  Trace **traces = calloc((size_t)threads, sizeof *traces);
+  bool ok = traces != NULL;
+  for (int k = 0; ok && k < threads; k++) {
+    traces[k] = trace_new();
+    ok = traces[k] && trace_init(traces[k], scene, TRACE_AOV);
+    if (ok) {
+      traces[k]->aov = (int)aov;
+      traces[k]->pixel = pixel;
+    }
+  }
+  if (ok)
+    return traces;
+  fprintf(stderr, "aov: out of memory\n");
+  for (int k = 0; traces && k < threads; k++) {
+    if (traces[k])
+      trace_free(traces[k]);
+    free(traces[k]);
+  }
+  free(traces);
+  return NULL;
+}
+
+/* The Phong terms: the whole picture rendered on materials that keep one
+ * term (trace.c's masked scene), the background black. */
+bool aov_render(const Scene *scene, RenderPixelFn pixel, const RenderSettings *set,
+                AovKind aov, Film *film, RenderStats *stats)
+{
+  int threads = render_threads(set);
+  Trace **traces = recorders(scene, pixel, aov, threads);
+  TraceEvents **events = traces ? calloc((size_t)threads, sizeof *events) : NULL;
+  bool ok = events != NULL;
+  if (ok && aov_term(aov) >= 0) { /* unrecorded: the scene's own index */
+    Scene masked = traces[0]->masked[aov_term(aov)];
+    masked.index = scene->index;
+    render(&masked, film, pixel, set, stats);
+  } else if (ok) {
+    for (int k = 0; k < threads; k++)
+      events[k] = &traces[k]->events;
+    RenderSettings with = *set;
+    with.traces = events;
+    render(scene, film, aov_pixel, &with, stats);
+  } else if (traces) {
+    fprintf(stderr, "aov: out of memory\n");
+  }
+  for (int k = 0; traces && k < threads; k++) {
+    trace_free(traces[k]);
+    free(traces[k]);
+  }
+  free(traces);
+  free(events);
+  return ok;
+}
+
+bool aov_file_is_bytes(const char *path)
+{
+  const char *dot = strrchr(path, '.');
+  return !dot || (strcmp(dot, ".pfm") && strcmp(dot, ".hdr"));
+}
+
+void aov_for_bytes(AovKind aov, int budget, Film *film)
+{
+  size_t n = (size_t)film->width * film->height * 3;
+  float near = INFINITY;
+  for (size_t k = 0; aov == AOV_DEPTH && k < n; k++)
+    if (film->rgb[k] > 0.0f && film->rgb[k] < near)
+      near = film->rgb[k];
+  for (size_t k = 0; k < n; k++) {
+    if (aov == AOV_DEPTH && film->rgb[k] > 0.0f)
+      film->rgb[k] = near / film->rgb[k];
+    else if (aov == AOV_SAMPLES)
+      film->rgb[k] /= (float)(budget > 0 ? budget : 1);
+  }
+}

@@ -1,0 +1,156 @@
+/* The recorder behind --trace and --aov (common/app/trace.h): what the
+ * steps' hooks reported (the camera ray's hit, each light's l, n.l, L_i and
+ * term), read at each scene query and after the pixel, turned into the lines
+ * of a trace or the sums of an --aov. README.md, "For students";
+ * docs/tracing.md. */
+#include "app/trace_state.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "app/aov.h"
+
+/* ---------------------------------------------------------------- hooks */
+
+void trace_flush_rays(Trace *t, int depth)
+{
+  for (int k = 0; k < t->rays.n; k++) {
+    t->rays.line[k].depth = depth;
+    trace_lines_push(&t->lines, &t->rays.line[k]);
+  }
+  t->rays.n = t->rays_blocked = 0;
+}
+
+static void on_hit(Trace *t, const TraceEvent *e)
+{
+  t->lit = e->inst->material >= 0;
+  t->light_shape = e->inst->light;
+  t->n = e->n;
+  if (t->mode == TRACE_AOV)
+    aov_camera_hit(t, e);
+  if (t->mode != TRACE_RECORD || t->compact || !t->lines.n)
+    return;
+  TraceLine *line = &t->lines.line[t->lines.n - 1]; /* the closest hit line */
+  trace_num(line, "t", e->t);
+  trace_vec(line, "p", e->p);
+  trace_vec(line, "n", e->n);
+  trace_word(line, "backface", e->flag ? "yes" : "no");
+}
+
+/* Light k's term in camera sample `sample` from the run on materials keeping
+ * `term` (each capture used once); false when that run had no such term. */
+static bool captured(Trace *t, int term, uint32_t sample, int k, vec3s *c)
+{
+  for (int e = 0; e < t->n_captured[term]; e++) {
+    TraceCaptured *cap = &t->captured[term][e];
+    if (!cap->used && cap->sample == sample && cap->light == k) {
+      cap->used = true;
+      *c = cap->c;
+      return true;
+    }
+  }
+  return false;
+}
+
+static void capture(Trace *t, uint32_t sample, int k, vec3s c)
+{
+  int term = t->term, n = t->n_captured[term];
+  if (n == t->cap_captured[term]) {
+    int cap = n ? 2 * n : 16;
+    TraceCaptured *bigger = realloc(t->captured[term], (size_t)cap * sizeof *bigger);
+    if (!bigger)
+      return;
+    t->captured[term] = bigger;
+    t->cap_captured[term] = cap;
+  }
+  t->captured[term][n] = (TraceCaptured){sample, k, false, c};
+  t->n_captured[term] = n + 1;
+}
+
+/* The light's diffuse and specular terms, as fields or lines under it. */
+static void light_terms(Trace *t, TraceLine *line, const TraceEvent *e, int depth)
+{
+  for (int term = TERM_DIFFUSE; term <= TERM_SPECULAR; term++) {
+    const char *name = aov_name((AovKind)(AOV_AMBIENT + term));
+    vec3s c;
+    TraceLine *to = t->compact ? line : trace_add(&t->lines, depth, name, TRACE_DOC_LIGHT);
+    const char *field = t->compact ? name : "rgb";
+    if (captured(t, term, e->sample, e->light, &c))
+      trace_vec(to, field, c);
+    else
+      trace_word(to, field, "not traced with this term alone");
+  }
+}
+
+static const char *light_type(const Light *light)
+{
+  return light->type == LIGHT_POINT ? "point" : light->type == LIGHT_AREA ? "area" : "directional";
+}
+
+static void on_light(Trace *t, const TraceEvent *e)
+{
+  char key[24];
+  snprintf(key, sizeof key, "light %d %s", e->light, light_type(&t->plain.lights[e->light]));
+  int depth = t->compact, at = t->lines.n;
+  TraceLine *line = trace_add(&t->lines, depth, key, TRACE_DOC_LIGHT);
+  trace_vec(line, "l", e->l);
+  trace_num(line, "n.l", glms_vec3_dot(t->n, e->l));
+  /* The shadow ray before L_i (zero when it is blocked): a wrong shadow ray
+   * is the first line that differs, not its consequence. */
+  if (t->compact) { /* its answer on the same line */
+    const TraceLine *ray = t->rays.n ? &t->rays.line[t->rays.n - 1] : NULL;
+    trace_word(line, "occluder", ray ? ray->f[ray->n_fields - 1].word : "no ray");
+    trace_vec(line, "L_i", e->li);
+    t->rays.n = t->rays_blocked = 0;
+  } else {
+    trace_flush_rays(t, depth + 1);
+    trace_vec(trace_add(&t->lines, depth + 1, "L_i", TRACE_DOC_LIGHT), "rgb", e->li);
+  }
+  light_terms(t, at < t->lines.n ? &t->lines.line[at] : NULL, e, depth + 1);
+}
+
+static void on_area(Trace *t, const TraceEvent *e)
+{
+  char key[24];
+  snprintf(key, sizeof key, "light %d area", e->light);
+  int depth = t->compact;
+  TraceLine *line = trace_add(&t->lines, depth, key, TRACE_DOC_AREA);
+  trace_num(line, "samples", t->ctx->set->light_samples);
+  if (e->flag) /* the renderer proved nothing can block the light */
+    trace_word(line, "shadow rays", "none needed (shadow-volume test)");
+  else
+    trace_num(line, "shadow rays", t->rays.n);
+  trace_num(line, "blocked", t->rays_blocked);
+  light_terms(t, line, e, depth + 1);
+  trace_flush_rays(t, depth + 1);
+}
+
+void trace_drain(Trace *t)
+{
+  for (int k = 0; k < t->events.n; k++) {
+    const TraceEvent *e = &t->events.e[k];
+    if (e->kind == TRACE_EVENT_HIT)
+      on_hit(t, e);
+    else if (t->mode == TRACE_CAPTURE)
+      capture(t, e->sample, e->light, e->c);
+    else if (t->mode == TRACE_AOV && e->kind == TRACE_EVENT_AREA && e->flag) {
+      t->shadow_rays += t->ctx->set->light_samples; /* no shadow ray: all clear */
+      t->shadow_clear += t->ctx->set->light_samples;
+    } else if (t->mode == TRACE_RECORD)
+      (e->kind == TRACE_EVENT_LIGHT ? on_light : on_area)(t, e);
+  }
+  if (t->events.dropped && t->mode == TRACE_RECORD)
+    trace_num(trace_add(&t->lines, 0, "not shown", TRACE_DOC_HIT), "events",
+              t->events.dropped);
+  t->events.n = t->events.dropped = 0;
+}
+
+void trace_begin_pixel(Trace *t)
+{
+  t->camera_next = true;
+  t->camera_rays = 0;
+  t->lit = false;
+  t->light_shape = -1;
+  t->sum = (FilmAccum){0};
+  t->shadow_rays = t->shadow_clear = 0;
+}

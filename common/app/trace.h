@@ -1,0 +1,151 @@
+/* Looking inside a render (every step from 02): `--trace X Y` records what
+ * the step computes for one pixel (rays, hits, lights, terms), `--aov NAME`
+ * (common/app/aov.c) draws one of those quantities for every pixel. Both run
+ * the step's own functions; off, each hook below costs one branch.
+ * README.md, "For students"; docs/tracing.md. */
+#ifndef RT_TRACE_H
+#define RT_TRACE_H
+
+#include <stdio.h>
+
+#include "app/render.h"
+#include "film.h"
+
+/* One line of a trace: a key ("camera ray"), up to TRACE_FIELDS named values
+ * (1 to 3 numbers, or a word), its indentation and the doc that explains it. */
+enum { TRACE_FIELDS = 6, TRACE_NAME = 16, TRACE_WORD = 96 };
+
+typedef struct TraceField {
+  char name[TRACE_NAME];
+  int n;               /* numbers in v (1 to 3); 0: the value is `word` */
+  double v[3];
+  char word[TRACE_WORD];
+} TraceField;
+
+typedef struct TraceLine {
+  int depth;           /* indentation level, 0 = the pixel */
+  char key[24];
+  char doc[120];       /* "docs/04-phong.md, \"The math\"" */
+  int n_fields;
+  TraceField f[TRACE_FIELDS];
+} TraceLine;
+
+typedef struct TraceLines {
+  TraceLine *line;     /* owned */
+  int n, cap;
+} TraceLines;
+
+/* The Phong terms, in --aov's order. */
+typedef enum TraceTerm { TERM_AMBIENT, TERM_DIFFUSE, TERM_SPECULAR, TERM_COUNT } TraceTerm;
+
+/* What a hook reports: a camera ray's closest hit, a light's term at it. */
+typedef enum TraceEventKind { TRACE_EVENT_HIT, TRACE_EVENT_LIGHT, TRACE_EVENT_AREA } TraceEventKind;
+
+typedef struct TraceEvent {
+  TraceEventKind kind;
+  int light;           /* LIGHT, AREA: index into scene->lights */
+  uint32_t sample;     /* ctx->sample */
+  bool flag;           /* HIT: a back face; AREA: proved unblocked (no
+                        * shadow ray traced) */
+  const struct Instance *inst; /* HIT: the instance hit */
+  float t;             /* HIT: its distance */
+  vec3s p, n;          /* HIT: the hit point and normal */
+  vec3s li, l, c;      /* LIGHT: L_i, toward the light, the term; AREA: c */
+} TraceEvent;
+
+/* The events reported since the recorder last read them (it does at each
+ * scene query and after the pixel); the last slot takes what does not fit. */
+enum { TRACE_EVENTS = 64 };
+typedef struct TraceEvents {
+  int n, dropped;      /* dropped: reported when the buffer was full */
+  TraceEvent e[TRACE_EVENTS + 1];
+} TraceEvents;
+
+/* Hooks the steps' glue code calls (outside the solution regions), each one
+ * branch on ctx->trace (NULL unless --trace or --aov is given). A hook only
+ * stores the values it is given into ctx->trace, one by one, and hands back
+ * its last argument: no call and no copy of a whole struct, so that the
+ * render around it compiles as it would without it (docs/tracing.md,
+ * "What it costs when off", measures it). */
+static inline TraceEvent *trace_slot(RenderCtx *ctx, TraceEventKind kind)
+{
+  TraceEvents *ev = ctx->trace;
+  TraceEvent *e = &ev->e[ev->n < TRACE_EVENTS ? ev->n++ : TRACE_EVENTS];
+  ev->dropped += e == &ev->e[TRACE_EVENTS];
+  e->kind = kind;
+  e->sample = ctx->sample;
+  return e;
+}
+
+/* The closest hit of a camera ray (the ray itself is in the query the
+ * recorder saw). */
+static inline void trace_hit(RenderCtx *ctx, const Hit *hit)
+{
+  if (__builtin_expect(ctx->trace != NULL, 0)) {
+    TraceEvent *e = trace_slot(ctx, TRACE_EVENT_HIT);
+    e->inst = hit->inst;
+    e->t = hit->t;
+    e->p = hit->p;
+    e->n = hit->n;
+    e->flag = hit->backface;
+  }
+}
+
+/* Light k's term c for the radiance li arriving from the unit direction l at
+ * the camera ray's hit; returns c. */
+static inline vec3s trace_light(RenderCtx *ctx, int k, vec3s li, vec3s l, vec3s c)
+{
+  if (__builtin_expect(ctx->trace != NULL, 0)) {
+    TraceEvent *e = trace_slot(ctx, TRACE_EVENT_LIGHT);
+    e->light = k;
+    e->li = li;
+    e->l = l;
+    e->c = c;
+  }
+  return c;
+}
+
+/* Area light k's term c at the hit (the sum over its samples); `unoccluded`
+ * when the renderer proved nothing can block it. Returns c. */
+static inline vec3s trace_area(RenderCtx *ctx, int k, bool unoccluded, vec3s c)
+{
+  if (__builtin_expect(ctx->trace != NULL, 0)) {
+    TraceEvent *e = trace_slot(ctx, TRACE_EVENT_AREA);
+    e->light = k;
+    e->flag = unoccluded;
+    e->c = c;
+  }
+  return c;
+}
+
+/* What --trace asks for. */
+typedef struct TraceRequest {
+  const char *step;    /* "05-shadows" */
+  unsigned features;   /* the step's SceneFeature bits */
+  RenderPixelFn pixel; /* the step's pixel function */
+  int x, y;            /* pixel, x from the left, y from the top */
+  Tonemap tonemap;
+  bool json;           /* JSON lines instead of indented text */
+  const char *args;    /* the other options of the command line (JSON header) */
+} TraceRequest;
+
+/* Render pixel (x, y) alone through req->pixel, recording every step, and
+ * print the trace to `out`. False (one line printed) when (x, y) is outside
+ * the film or memory runs out. */
+bool trace_pixel(const Scene *scene, const RenderSettings *set, const TraceRequest *req,
+                 FILE *out);
+
+/* The text of one line as --trace prints it, indented, without a newline. */
+void trace_line_text(const TraceLine *line, char *buf, size_t size);
+
+/* Print lines as indented text, or as the JSON lines of a trace file. */
+void trace_lines_print(const TraceLines *lines, bool json, FILE *out);
+
+/* Parse one JSON line written by trace_lines_print; false when it is not one. */
+bool trace_line_parse(const char *text, TraceLine *line);
+
+/* Append a copy of `line`; false when out of memory. */
+bool trace_lines_push(TraceLines *lines, const TraceLine *line);
+void trace_lines_free(TraceLines *lines);
+
+#endif

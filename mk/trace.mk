@@ -1,0 +1,89 @@
+# Looking inside a pixel (README.md, "For students"; docs/tracing.md): the
+# tracer's tests, the reference traces and make trace-step N [X Y], the
+# report and its check in a browser. (The per-term reference images are
+# tools/images.sh's.)
+
+TRACE_DIFF := $(BUILD)/bin/trace-diff
+$(TRACE_DIFF): $(BUILD)/obj/tools/trace-diff.o $(LIBCOMMON)
+	@mkdir -p $(@D)
+	@echo "LD $@"
+	@$(CC) $(CFLAGS) $(LDFLAGS) $^ $(LDLIBS) -o $@
+
+# The reference traces: the pixels of tests/traces/pixels traced by the
+# solution's binaries (on purpose only, like make images).
+traces: $(BINS)
+	@tools/traces.sh write $(BUILD) $(PRESENT)
+
+# make trace-step N [X Y]: step N's traces against the references, the first
+# line that differs for each pixel (or only pixel X Y).
+ifeq (trace-step,$(firstword $(MAKECMDGOALS)))
+  N ?= $(word 2,$(MAKECMDGOALS))
+  TRACE_XY := $(wordlist 3,4,$(MAKECMDGOALS))
+  $(foreach w,$(wordlist 2,4,$(MAKECMDGOALS)),$(eval $(w):;@:))
+endif
+trace-step: $(TRACE_DIFF) $(if $(filter $(STEP_N),$(PRESENT)),$(BUILD)/bin/$(STEP_N))
+	@if [ -z "$(N)" ]; then echo "usage: make trace-step N [X Y]   (N = 1 .. 8)"; exit 2; fi
+	@if [ -z "$(filter $(STEP_N),$(PRESENT))" ]; then \
+	  echo "make trace-step: there is no step '$(N)' (steps are 1 .. 8)"; exit 2; fi
+	@tools/traces.sh compare $(BUILD) $(STEP_N) $(TRACE_XY)
+
+# CI: the solution's traces are the references (make traces after a change
+# that moves them on purpose).
+check-traces: $(TRACE_DIFF) $(BINS)
+	@status=0; for s in $(PRESENT); do \
+	  tools/traces.sh compare $(BUILD) $$s > $(BUILD)/check-traces.log 2>&1 || { \
+	    cat $(BUILD)/check-traces.log; status=1; }; done; \
+	[ $$status = 0 ] && echo "check-traces: every reference trace agrees with the solution"; \
+	exit $$status
+
+.PHONY: traces trace-step check-traces
+
+# The tests of --trace and --aov (tests/test_trace.c): they run every step's
+# binary, so they are a test binary of their own, run by make test.
+TRACE_TESTBIN := $(BUILD)/tests/trace
+$(BUILD)/obj/tests/trace/%.o: tests/%.c | $(BUILD)/.deps
+	@mkdir -p $(@D)
+	@echo "CC $<  (trace)"
+	@$(CC) $(CFLAGS) $(PKG_CFLAGS) -Itests -DBUILD_DIR='"$(BUILD)"' -c $< -o $@
+$(TRACE_TESTBIN): $(BUILD)/obj/tests/trace/test_trace.o $(LIBCOMMON) $(BINS)
+	@mkdir -p $(@D)
+	@echo "LD $@"
+	@$(CC) $(CFLAGS) $(LDFLAGS) $(filter %.o %.a,$^) $(LDLIBS) -lcriterion -o $@
+test: $(TRACE_TESTBIN)
+
+# The report (tools/report.c, its look in tools/report.html): make test and
+# make test-step N write build/report/index.html from the results files and
+# the image tests' pictures.
+REPORT := $(BUILD)/bin/report
+$(REPORT): tools/report.c tools/json.h | $(BUILD)/.deps
+	@mkdir -p $(@D)
+	@echo "CC $<"
+	@$(CC) $(CFLAGS) $< -o $@
+report: $(REPORT)
+	@mkdir -p $(BUILD)/report
+	@$(REPORT) $(BUILD) tools/report.html
+.PHONY: report
+
+# What the Makefile's test and test-step recipes run after the tests (their
+# exit status kept): the report, and for make test the report in a browser
+# (tests/report.sh; chromium is installed when make runs as root, else the
+# browser test says SKIP).
+DEB_REPORT := chromium
+REPORT_AFTER_TEST = mkdir -p $(BUILD)/report && $(REPORT) $(BUILD) tools/report.html && \
+                    tests/report.sh $(BUILD)
+REPORT_AFTER_STEP = mkdir -p $(BUILD)/report && $(REPORT) $(BUILD) tools/report.html $(STEP_N)
+report-deps:
+	-@$(call need_debs,$(DEB_REPORT))
+test: $(REPORT) $(BUILD)/bin/report-check report-deps
+test-step: $(REPORT)
+.PHONY: report-deps
+$(BUILD)/bin/report-check: $(BUILD)/obj/tools/report-check.o $(LIBCOMMON)
+	@mkdir -p $(@D)
+	@echo "LD $@"
+	@$(CC) $(CFLAGS) $(LDFLAGS) $^ $(LDLIBS) -o $@
+
+# The pictures and trace lines of the step docs' "Seeing the mistake"
+# sections (tools/trace-mistakes.sh; on purpose only, several minutes).
+trace-mistakes: $(BINS)
+	@tools/trace-mistakes.sh $(BUILD)
+.PHONY: trace-mistakes

@@ -1,0 +1,70 @@
+#!/usr/bin/env bash
+# The report in a real browser (docs/tracing.md, "The report"), run by make
+# test after it writes BUILD/report/index.html. Headless Chromium renders two
+# reports to screenshots and tools/report-check.c finds every picture of the
+# page in them (a missing or broken picture shows as a small icon instead):
+#   1. BUILD/report/index.html, the one make test just wrote;
+#   2. a scratch copy (BUILD/report-test) where step 03 passes and step 04
+#      fails: its reference pictures are rendered from a scene whose red
+#      material lost its specular colour, so the image test fails and compares
+#      the terms.
+# Usage: tests/report.sh BUILD. Prints one verdict line per report; exit 1
+# when a picture is not shown. Without chromium it says SKIP and exits 0.
+set -uo pipefail
+build=${1:?usage: tests/report.sh BUILD}
+browser=$(command -v chromium || true)
+if [ -z "$browser" ]; then
+  echo "SKIP  report in a browser: chromium is not installed (make test installs it when"
+  echo "      run as root; otherwise: sudo apt-get install chromium)"
+  exit 0
+fi
+
+# shot PAGE PNG HEIGHT: the page at 1400 x HEIGHT pixels, one device pixel each.
+shot() {
+  "$browser" --headless --no-sandbox --disable-gpu --hide-scrollbars \
+    --force-device-scale-factor=1 --window-size=1400,"$3" --screenshot="$2" \
+    "file://$(realpath "$1")" > /dev/null 2>&1
+}
+
+# check WHAT PAGE PNG HEIGHT: one verdict line.
+check() {
+  rm -f "$3"
+  if ! shot "$2" "$3" "$4" || [ ! -s "$3" ]; then
+    echo "FAIL  report in a browser: $1: chromium wrote no screenshot of $2"; return 1
+  fi
+  if out=$("$build/bin/report-check" "$2" "$3"); then
+    echo "PASS  report in a browser: $1: ${out#report-check: }"
+  else
+    echo "FAIL  report in a browser: $1:"; echo "$out" | sed 's/^/      /'; return 1
+  fi
+}
+
+status=0
+check "make test's report" "$build/report/index.html" "$build/report/screenshot.png" 9000 ||
+  status=1
+
+# The scratch copy: the test binaries and programs of BUILD, its own outputs.
+scratch=$build/report-test
+rm -rf "$scratch"
+mkdir -p "$scratch/$build" "$scratch/tools" "$scratch/tests"
+for d in bin tests; do ln -s "$(realpath "$build/$d")" "$scratch/$build/$d"; done
+cp -r images "$scratch/"
+cp tools/report.html "$scratch/tools/"
+cp tests/run.sh "$scratch/tests/"
+sed 's/^\(material red .*\) specular [0-9. ]* shininess [0-9]*/\1/' scenes/spheres.scene \
+  > "$scratch/broken.scene"
+for what in "" .ambient .diffuse .specular; do
+  "$build/bin/04-phong" --scene "$scratch/broken.scene" --width 320 --height 240 --threads 2 \
+    --quiet ${what:+--aov ${what#.}} -o "$scratch/images/04-phong$what.png" || exit 1
+done
+(cd "$scratch" && tests/run.sh "$build/tests/03-camera" "$build/tests/04-phong" > run.log 2>&1
+ "$build/bin/report" "$build" tools/report.html > /dev/null)
+page=$scratch/$build/report/index.html
+if ! grep -q '<h2>03-camera <span class="pass">' "$page" ||
+   ! grep -q '<h2>04-phong <span class="fail">' "$page"; then
+  echo "FAIL  report in a browser: the scratch report should show 03-camera PASS and 04-phong"
+  echo "      FAIL ($page; the tests said: $scratch/run.log)"; status=1
+fi
+check "a passing step (03) and a failing one (04)" "$page" "$scratch/$build/report/screenshot.png" \
+  3200 || status=1
+exit $status
