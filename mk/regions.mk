@@ -1,0 +1,15 @@
+# The solution regions and the check that the tests cannot be fooled
+# (docs/testing-the-tests.md): tools/regions.sh, tools/check-regions.sh.
+
+# make regions: every region, its step, function and hash.
+regions:
+	@tools/regions.sh list
+
+# make check-regions [REGIONS=pattern]: copies of a region in several step
+# folders are identical, and stubbing any one region fails the step that
+# introduces it and the image test of every later step that uses it.
+check-regions:
+	@tools/regions.sh same
+	@tools/check-regions.sh $(if $(REGIONS),'$(REGIONS)')
+
+.PHONY: regions check-regions
