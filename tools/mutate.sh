@@ -27,7 +27,7 @@ id=$1 dir=$2
 [ -f "$mutants/$id.mut" ] || { echo "mutate: no mutant '$id' (tools/mutate.sh --list names them)" >&2; exit 2; }
 [ -d "$dir" ] || { echo "mutate: no directory '$dir'" >&2; exit 2; }
 
-perl - "$mutants/$id.mut" "$dir" "$id" <<'PERL'
+(cd "$here/.." && perl - "tools/mutants/$id.mut" "$(realpath "$dir")" "$id") <<'PERL'
 use strict;
 use warnings;
 my ($mut, $dir, $id) = @ARGV;
