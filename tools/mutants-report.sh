@@ -10,7 +10,8 @@ awk -F'\t' -v seconds="$2" -v count="$3" '
 function has(list, x,    a, n, k) { n = split(list, a, " "); for (k = 1; k <= n; k++) if (a[k] == x) return 1; return 0 }
 function first(list,    a) { split(list, a, " "); return a[1] == "" ? "-" : a[1] }
 function pct(a, b) { return b ? sprintf("%d/%d (%.0f %%)", a, b, 100 * a / b) : "-" }
-{ id[NR] = $1; step[NR] = $2; kind[NR] = $3; caught[NR] = $4; ran[NR] = $5; status[NR] = $6; what[NR] = $7 }
+{ id[NR] = $1; step[NR] = $2; kind[NR] = $3; caught[NR] = $4; ran[NR] = $5; status[NR] = $6; what[NR] = $7
+  gsub(/\|/, "\\|", what[NR]) }
 END {
   print "# Mutants: what the tests catch"
   print ""
