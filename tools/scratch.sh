@@ -54,5 +54,6 @@ png_size() {
   od -An -tu1 -j16 -N8 "$1" | awk '{ print $1 * 16777216 + $2 * 65536 + $3 * 256 + $4, $5 * 16777216 + $6 * 65536 + $7 * 256 + $8 }'
 }
 
-# tap_failed FILE: the tests a Criterion TAP report marks failed, one a line.
-tap_failed() { sed -n 's/^not ok - \([^ ]*\).*/\1/p' "$1" 2>/dev/null; }
+# tap_tests FILE "ok"|"not ok": the tests (suite::name) a Criterion TAP report
+# marks passed or failed, one a line.
+tap_tests() { sed -n "s/^$2 - \([^ ]*\).*/\1/p" "$1" 2>/dev/null; }
