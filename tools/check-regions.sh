@@ -38,7 +38,6 @@ TOGETHER=(
 # this table cannot rot.
 EXCEPTIONS=(
   "01 film_sample 07,08 steps 07 and 08 place their own samples inside the pixel (trace_samples) and never call film_sample"
-  "01 film_to_byte 02,03,04,05,06,07,08 the image tests compare the render's floats (.pfm), which never go through the byte export; step 01's unit tests check it"
   "02 sphere_hit_fill 03 step 03 draws each object in its flat colour: it needs which instance was hit (set outside the region), not the point or the normal"
   "02 plane_hit_fill 03 step 03 draws each object in its flat colour: it needs which instance was hit (set outside the region), not the point or the normal"
   "06 shade_trace 08 step 08's scene has no point light with a radius, so no light sphere for the camera to see"
