@@ -22,7 +22,8 @@ END {
   print "carries its code; the tree is built and put through `make test-step 1` ..."
   print "`make test-step 8` and `make stress`. A check whose test binary and program"
   print "are byte for byte the solution'"'"'s is not re-run (its verdict is the"
-  print "solution'"'"'s: pass); \"not reached\" below means step 08 is such a check."
+  print "solution'"'"'s: pass); a bug \"reaches\" step 08 when it changes step 08'"'"'s"
+  print "program or test binary, and \"not reached\" below means it does not."
   printf "This run: %d mutants in %d s (2 cores).\n", count, seconds
   print ""
   print "## Bugs"
@@ -48,10 +49,9 @@ END {
   print ""
   print "Own step: `make test-step N` fails for a bug of step N. Any test: some"
   print "`make test-step K` or `make stress` fails (`make test` fails). Step 8: `make"
-  print "test-step 8` fails, over the bugs whose code step 08 runs (reached) and"
-  print "over all."
+  print "test-step 8` fails, over the bugs that reach step 08 and over all."
   print ""
-  print "| step | bugs | own step | any test | step 8, of those reached | step 8, of all |"
+  print "| step | bugs | own step | any test | step 8, of those reaching it | step 8, of all |"
   print "|---|---|---|---|---|---|"
   for (k = 1; k <= 99; k++) {
     s = sprintf("%02d", k)
