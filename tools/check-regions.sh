@@ -13,10 +13,8 @@ usage() { echo "usage: tools/check-regions.sh [PATTERN]" >&2; exit 2; }
 [ $# -le 1 ] || usage
 pattern=${1:-}
 
-top=$(git -C "$(dirname "$0")" rev-parse --show-toplevel 2>/dev/null) || {
-  echo "check-regions: not inside a git checkout (the scratch tree is made from git ls-files)" >&2; exit 1; }
-cd "$top"
-. tools/scratch.sh
+. "$(dirname "$0")/scratch.sh"
+scratch_top check-regions   # sets top and goes there
 work=$top/build/check-regions
 tree=$work/tree
 

@@ -17,10 +17,8 @@ check_only=0
 [ $# -le 1 ] || usage
 pattern=${1:-}
 
-top=$(git -C "$(dirname "$0")" rev-parse --show-toplevel 2>/dev/null) || {
-  echo "mutants: not inside a git checkout (the scratch tree is made from git ls-files)" >&2; exit 1; }
-cd "$top"
-. tools/scratch.sh
+. "$(dirname "$0")/scratch.sh"
+scratch_top mutants   # sets top and goes there
 work=$top/build/mutants
 tree=$work/tree
 

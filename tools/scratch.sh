@@ -3,6 +3,14 @@
 # that one build directory serves from one change to the next.
 # docs/testing-the-tests.md.
 
+# scratch_top NAME: top= the checkout's top folder, and cd there (NAME: the
+# tool, for the error).
+scratch_top() {
+  top=$(git -C "$(dirname "$0")" rev-parse --show-toplevel 2>/dev/null) || {
+    echo "$1: not inside a git checkout (the scratch tree is made from git ls-files)" >&2; exit 1; }
+  cd "$top" || exit 1
+}
+
 # scratch_sync TOP TREE: make TREE hold exactly the tracked files of TOP.
 # Only files whose content differs are copied, without keeping their times,
 # so make rebuilds exactly what changed since the last build in TREE.
