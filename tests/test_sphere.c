@@ -148,3 +148,38 @@ Test(sphere, normal_always_faces_the_ray)
   CHECK_DONE(&ct);
   CHECK_DONE(&f);
 }
+
+Test(sphere, p_err_bounds_the_hit_points_error)
+{
+  /* Spheres far from the origin and near it: p_err must be positive, at least
+   * the distance of the refined p from the exact intersection (computed in
+   * long double from the float inputs), and no more than 2^-20 (max|c| + r)
+   * (a larger bound pushes shadow rays visibly off the surface). */
+  Check f = CHECK("sphere_hit_fill", DOC);
+  const float scales[] = {1.0f, 1e3f, 1e5f};
+  for (int k = 0; k < 3; k++) {
+    float d0 = scales[k];
+    Sphere s = {.center = vec_make(0.3f * d0, 0.2f * d0, -d0), .radius = 0.25f * d0};
+    Ray r = ray(0.01f * d0, 0.0f, 0.5f * d0, 0.3f, 0.19f, -1.5f);
+    long double o[3] = {r.o.x, r.o.y, r.o.z}, d[3] = {r.d.x, r.d.y, r.d.z};
+    long double c[3] = {s.center.x, s.center.y, s.center.z}, fo[3], b = 0, cc = 0, dd = 0;
+    for (int a = 0; a < 3; a++) {
+      fo[a] = o[a] - c[a];
+      b += fo[a] * d[a];
+      cc += fo[a] * fo[a];
+      dd += d[a] * d[a];
+    }
+    cc -= (long double)s.radius * s.radius;
+    long double t = (-b - sqrtl(b * b - dd * cc)) / dd, err = 0;
+    Hit h;
+    sphere_hit_fill(&s, r, (float)t, &h);
+    for (int a = 0; a < 3; a++)
+      err = fmaxl(err, fabsl((long double)h.p.raw[a] - (o[a] + t * d[a])));
+    float cap = 0x1p-20f * (vec_max_abs(s.center) + s.radius);
+    CHECK_THAT(&f, h.p_err > 0.0f && (long double)h.p_err >= err && h.p_err <= cap,
+               "sphere of radius %g at distance %g: hit.p_err must bound p's error and stay "
+               "small\n  expected %.9Lg <= p_err <= %.9g (p_err > 0)\n  got      p_err = %.9g",
+               (double)s.radius, (double)d0, err, (double)cap, (double)h.p_err);
+  }
+  CHECK_DONE(&f);
+}

@@ -74,13 +74,17 @@ END {
   print "## Correct alternatives"
   print ""
   print "Each must pass every test; one that fails is a test asking for more than"
-  print "the doc does."
+  print "the doc does. An `unrefined` one is a correct form that the docs say the"
+  print "stress tests reject (they ask for an accuracy refinement it lacks): it must"
+  print "pass every `make test-step`."
   print ""
   print "| alternative | step | what | result |"
   print "|---|---|---|---|"
   for (i = 1; i <= NR; i++) {
-    if (kind[i] != "alternative") continue
-    r = status[i] != "ok" ? "**" status[i] "**" : (caught[i] == "" ? "passes every test" : "**fails " caught[i] "**")
+    if (kind[i] !~ /^alternative/) continue
+    ok = caught[i] == "" || (kind[i] == "alternative-unrefined" && caught[i] == "stress")
+    r = status[i] != "ok" ? "**" status[i] "**" : (caught[i] == "" ? "passes every test" : \
+        ok ? "passes every test-step; fails stress, as documented (unrefined)" : "**fails " caught[i] "**")
     printf "| `%s` | %s | %s | %s |\n", id[i], step[i], what[i], r
   }
 }' "$1"

@@ -125,6 +125,9 @@ tools/mutants-report.sh "$results" "$seconds" "${#mutants[@]}" >"$out"
 echo
 sed -n '/^## Catch rate/,/^## Correct/p' "$out" | sed '$d'
 echo "mutants: wrote ${out#$top/} ($seconds s: the solution $(awk -v a="$t_start" -v b="$t_base" 'BEGIN { printf "%.0f", b - a }') s)"
-wrong=$(awk -F'\t' '$3 == "alternative" && $4 != ""' "$results" | wc -l)
+# An alternative-unrefined (a correct form the docs say make stress rejects,
+# e.g. the lecture's camera) may fail the stress tests, nothing else.
+wrong=$(awk -F'\t' '($3 == "alternative" && $4 != "") ||
+                    ($3 == "alternative-unrefined" && $4 != "" && $4 != "stress")' "$results" | wc -l)
 [ "$wrong" -eq 0 ] || echo "mutants: $wrong correct alternative(s) fail a test (see ${out#$top/})"
 [ $errors -eq 0 ] && [ "$wrong" -eq 0 ]

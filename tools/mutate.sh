@@ -62,7 +62,8 @@ while (my $line = <$in>) {
 fail("$mut: a hunk never ends ('\@\@ end')") if defined $part;
 fail("$mut: no hunk") unless @hunks;
 for my $k ('step', 'kind', 'what') { fail("$mut: no '$k:' line") unless defined $head{$k}; }
-fail("$mut: kind must be 'bug' or 'alternative'") unless $head{kind} =~ /^(bug|alternative)$/;
+fail("$mut: kind must be 'bug', 'alternative' or 'alternative-unrefined'")
+  unless $head{kind} =~ /^(bug|alternative|alternative-unrefined)$/;
 
 # Apply every hunk in memory first: nothing is written unless all match.
 my (%text, @order);
