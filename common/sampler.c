@@ -137,20 +137,20 @@ static float fraction(uint32_t x)
 }
 
 vec2s sampler_get(SamplerKind kind, uint32_t seed, uint32_t pixel, uint32_t index,
-                  uint32_t first, uint32_t count)
+                  uint32_t count)
 {
   vec2s s = {.x = 0.5f, .y = 0.5f};
   Rng r = sample_rng(seed, pixel, index);
   switch (kind) {
   case SAMPLER_GRID:
-    return grid_point(index - first, count);
+    return grid_point(index, count);
   case SAMPLER_RANDOM:
     s.x = rng_float(&r);
     s.y = rng_float(&r);
     return s;
   case SAMPLER_JITTER: {
     float u = rng_float(&r);
-    return cell_point(index - first, count, u, rng_float(&r));
+    return cell_point(index, count, u, rng_float(&r));
   }
   case SAMPLER_SOBOL: {
     /* One pair of scramble seeds per pixel: the stream of sample 2^32 - 1,

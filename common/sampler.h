@@ -25,15 +25,15 @@ const char *sampler_name(SamplerKind kind);
 
 /* Sample `index` of pixel `pixel` (j * width + i) for `seed`: a point of
  * [0,1)^2 inside the pixel, (0,0) its bottom-left corner. The samples
- * [first, first + count) of a pixel form one pattern: grid and jitter spread
- * them over `count` cells of equal area 1/count (a k x k grid when count is a
- * square; otherwise r = floor(sqrt(count)) rows, row q holding
+ * 0 .. count - 1 of a pixel form one pattern: grid and jitter spread them over
+ * `count` cells of equal area 1/count (a k x k grid when count is a square;
+ * otherwise r = floor(sqrt(count)) rows, row q holding
  * floor((q+1) count/r) - floor(q count/r) cells and as tall as that count
- * over `count`). Sobol and random ignore `first` and `count`: any run of
- * samples from 0 is already spread over the pixel (the Sobol points 0..2^m-1
- * hold one point in every elementary box of area 2^-m). Random numbers come
- * from rng_make(seed, pixel, index) only. Requires index - first < count. */
+ * over `count`). Sobol and random ignore `count`: any run of samples from 0
+ * is already spread over the pixel (the Sobol points 0..2^m-1 hold one point
+ * in every elementary box of area 2^-m). Random numbers come from
+ * rng_make(seed, pixel, index) only. Requires index < count. */
 vec2s sampler_get(SamplerKind kind, uint32_t seed, uint32_t pixel, uint32_t index,
-                  uint32_t first, uint32_t count);
+                  uint32_t count);
 
 #endif

@@ -84,7 +84,7 @@ static LightPattern pattern_make(const RenderCtx *ctx, int light, int n)
 static vec3s area_incident(const Light *light, const LightPattern *pat, int k,
                            const Hit *hit, vec3s *l, float *dist)
 {
-  vec2s ab = sampler_get(pat->kind, pat->key, pat->pixel, (uint32_t)k, 0, (uint32_t)pat->n);
+  vec2s ab = sampler_get(pat->kind, pat->key, pat->pixel, (uint32_t)k, (uint32_t)pat->n);
   vec3s to_x = glms_vec3_sub(quad_point(&light->quad, ab.x, ab.y), hit->p);
   float r2 = glms_vec3_dot(to_x, to_x);
   *dist = sqrtf(r2);
