@@ -19,12 +19,13 @@ static vec3s trace_point(const Scene *scene, float x, float y, RenderCtx *ctx)
  * pixel (i, j), each keyed by its index (step 08's light samples use it). */
 static vec3s pixel_sampled(const Scene *scene, int i, int j, RenderCtx *ctx)
 {
-  const RenderSettings *set = ctx->set;
   uint32_t n = (uint32_t)scene->samples;
+  SamplerPattern pattern =
+      sampler_pattern((SamplerKind)ctx->set->sampler, ctx->set->seed, ctx->pixel, n);
   FilmAccum acc = {0};
   for (uint32_t k = 0; k < n; k++) {
     ctx->sample = k;
-    vec2s s = sampler_get((SamplerKind)set->sampler, set->seed, ctx->pixel, k, n);
+    vec2s s = sampler_point(&pattern, k);
     film_accum_add(&acc, trace_point(scene, (float)i + s.x, (float)j + s.y, ctx));
   }
   return film_accum_mean(&acc);
