@@ -8,9 +8,9 @@
 #include "rng.h"
 #include "sampler.h"
 
-/* The shadow-volume test pays only with more samples than this; a point it
- * clears takes a quarter of the light samples, but at least this many. */
-enum { SHADOW_VOLUME_MIN_SAMPLES = 4, UNOCCLUDED_MIN_SAMPLES = 16 };
+/* The shadow-volume test pays only with more samples than this; with the
+ * grid, a point it clears takes a quarter of the samples, at least this many. */
+enum { SHADOW_VOLUME_MIN_SAMPLES = 4, GRID_UNOCCLUDED_MIN = 16 };
 
 bool shade_visible(const Scene *scene, const Hit *hit, vec3s l, float dist, RenderCtx *ctx)
 {
@@ -120,14 +120,16 @@ static vec3s shade_light(const Scene *scene, int k, const Hit *hit, vec3s v, Ren
   if (light->type == LIGHT_AREA) {
     /* A speed-up, not the lesson (docs/performance.md): when no lit shape can
      * stand between the point and the light, the samples are shaded in a view
-     * of the scene whose shadow queries answer "nothing" without a ray, and
-     * a quarter of them suffice: without shadows the light's term varies
-     * smoothly over the light (each sample stays an unbiased estimate). */
+     * of the scene whose shadow queries answer "nothing" without a ray. With
+     * the grid, a quarter of its samples suffice there: without a shadow edge
+     * the light's term is smooth, and the grid's error on it small. */
     int n = ctx->set->light_samples;
     if (n > SHADOW_VOLUME_MIN_SAMPLES && accel_quad_unoccluded(scene, hit, &light->quad)) {
       Scene view = scene_view_unoccluded(scene);
-      int few = n / 4 > UNOCCLUDED_MIN_SAMPLES ? n / 4 : UNOCCLUDED_MIN_SAMPLES;
-      return shade_area(&view, k, hit, v, few < n ? few : n, ctx);
+      int few = n / 4 > GRID_UNOCCLUDED_MIN ? n / 4 : GRID_UNOCCLUDED_MIN;
+      if (ctx->set->sampler == SAMPLER_GRID && few < n)
+        n = few;
+      return shade_area(&view, k, hit, v, n, ctx);
     }
     return shade_area(scene, k, hit, v, n, ctx);
   }

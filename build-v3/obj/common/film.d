@@ -1,0 +1,3 @@
+build-v3/obj/common/film.o: common/film.c common/film.h common/vec.h
+common/film.h:
+common/vec.h:
