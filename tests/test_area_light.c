@@ -1,6 +1,7 @@
 /* Unit tests of step 08's area lights (shade_area, shade_phong, shade_trace):
  * the estimate against Lambert's closed-form polygon irradiance (bias checked
- * over many seeds, with and without the shadow-volume skip), a tiny light
+ * over many seeds, with and without the shadow-volume skip), the shadow views
+ * against the whole scene, a tiny light
  * against a point light, one-sidedness, light patterns keyed by pixel and
  * camera sample (also through the step's binary), and the radiance the camera
  * sees. docs/08-area-lights.md. */
@@ -303,8 +304,9 @@ Test(area_light, shadow_volume_skip_equals_the_same_estimate_without_rays)
   scene_free(&s);
 }
 
-/* A random ray from the spawned origin of h to a point of the light. */
-static bool random_ray_occluded(const Scene *s, const Hit *h, const Quad *q, Rng *r)
+/* A random shadow ray from the spawned origin of h to a point of the light
+ * (its front side only); false when the point is behind h. */
+static bool random_shadow_ray(const Hit *h, const Quad *q, Rng *r, Ray *ray, float *tmax)
 {
   vec3s x = quad_point(q, rng_float(r), rng_float(r));
   vec3s to_x = glms_vec3_sub(x, h->p);
@@ -312,18 +314,22 @@ static bool random_ray_occluded(const Scene *s, const Hit *h, const Quad *q, Rng
   vec3s l = glms_vec3_scale(to_x, 1.0f / dist);
   if (!(glms_vec3_dot(h->n, l) > 0.0f))
     return false;
-  return scene_occluded(s, ray_spawn(h, l), ray_shadow_tmax(dist));
+  *ray = ray_spawn(h, l);
+  *tmax = ray_shadow_tmax(dist);
+  return true;
 }
 
-Test(area_light, shadow_volume_test_never_skips_a_ray_that_is_blocked)
+Test(area_light, shadow_views_answer_every_shadow_ray_as_the_scene_does)
 {
   /* Random spheres over the floor; shading points on the floor and on the
-   * spheres. Whenever accel_quad_unoccluded says no shadow ray is needed, 64
-   * random shadow rays (scene_occluded, the ray code itself) must all pass.
-   * It must also say so often enough to matter, and sometimes not. */
+   * spheres. accel_shadow_view gives a view whose shadow queries test only
+   * the shapes that may stand in the way (none: no ray at all). For 64
+   * random shadow rays per point, scene_occluded on the view must answer as
+   * on the whole scene (the ray code itself). Each kind of view must occur
+   * often enough to matter. */
   Rng r = rng_make(7, 0, 0);
-  int skipped = 0, kept = 0;
-  Check k = CHECK("accel_quad_unoccluded", DOC_SKIP);
+  int counts[3] = {0, 0, 0}; /* views with no shape, some shapes, the whole scene */
+  Check k = CHECK("accel_shadow_view, accel_quad_unoccluded", DOC_SKIP);
   for (int scene_k = 0; scene_k < 20; scene_k++) {
     char text[1024];
     int len = snprintf(text, sizeof text,
@@ -345,22 +351,30 @@ Test(area_light, shadow_volume_test_never_skips_a_ray_that_is_blocked)
                                                    rng_float(&r) - 0.5f))};
       if (!scene_intersect(&s, cam, INFINITY, &h) || h.inst->light >= 0)
         continue;
-      if (!accel_quad_unoccluded(&s, &h, q)) {
-        kept++;
-        continue;
+      AccelShadowView storage;
+      Scene view;
+      int n = accel_shadow_view(&s, &h, q, &storage, &view);
+      counts[n == 0 ? 0 : n > 0 ? 1 : 2]++;
+      CHECK_INT(&k, n == 0, accel_quad_unoccluded(&s, &h, q), "random scene %d, point (%g, %g, "
+                "%g): accel_quad_unoccluded against a view with no shape", scene_k, h.p.x,
+                h.p.y, h.p.z);
+      int differ = 0;
+      for (int j = 0; j < 64; j++) {
+        Ray ray;
+        float tmax;
+        if (random_shadow_ray(&h, q, &r, &ray, &tmax))
+          differ += scene_occluded(&view, ray, tmax) != scene_occluded(&s, ray, tmax);
       }
-      skipped++;
-      int blocked = 0;
-      for (int j = 0; j < 64; j++)
-        blocked += random_ray_occluded(&s, &h, q, &r);
-      CHECK_INT(&k, 0, blocked, "random scene %d, point (%g, %g, %g) said unshadowed: blocked "
-                "shadow rays of 64", scene_k, h.p.x, h.p.y, h.p.z);
+      CHECK_INT(&k, 0, differ, "random scene %d, point (%g, %g, %g), a view testing %d shapes: "
+                "shadow rays of 64 answered otherwise than on the scene", scene_k, h.p.x, h.p.y,
+                h.p.z, n);
     }
     scene_free(&s);
   }
   CHECK_DONE(&k);
-  CHECK_THAT(&k, skipped > 100 && kept > 100, "points skipped %d and kept %d: expected more "
-             "than 100 of each (the test must matter)", skipped, kept);
+  CHECK_THAT(&k, counts[0] > 100 && counts[1] > 100, "views with no shape %d, with some %d, "
+             "the whole scene %d: expected more than 100 of the first two (the test must "
+             "matter)", counts[0], counts[1], counts[2]);
 }
 
 Test(area_light, a_hidden_light_adds_nothing)

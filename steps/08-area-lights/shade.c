@@ -118,20 +118,22 @@ static vec3s shade_light(const Scene *scene, int k, const Hit *hit, vec3s v, Ren
 {
   const Light *light = &scene->lights[k];
   if (light->type == LIGHT_AREA) {
-    /* A speed-up, not the lesson (docs/performance.md): when no lit shape can
-     * stand between the point and the light, the samples are shaded in a view
-     * of the scene whose shadow queries answer "nothing" without a ray. With
-     * the grid, a quarter of its samples suffice there: without a shadow edge
-     * the light's term is smooth, and the grid's error on it small. */
+    /* A speed-up, not the lesson (docs/performance.md): the samples are
+     * shaded in a view of the scene whose shadow queries test only the lit
+     * shapes that may stand between the point and the light, and answer
+     * "nothing" without a ray when none can. There, with the grid, a quarter
+     * of its samples suffice: without a shadow edge the light's term is
+     * smooth, and the grid's error on it small. */
     int n = ctx->set->light_samples;
-    if (n > SHADOW_VOLUME_MIN_SAMPLES && accel_quad_unoccluded(scene, hit, &light->quad)) {
-      Scene view = scene_view_unoccluded(scene);
-      int few = n / 4 > GRID_UNOCCLUDED_MIN ? n / 4 : GRID_UNOCCLUDED_MIN;
-      if (ctx->set->sampler == SAMPLER_GRID && few < n)
-        n = few;
-      return shade_area(&view, k, hit, v, n, ctx);
-    }
-    return shade_area(scene, k, hit, v, n, ctx);
+    if (n <= SHADOW_VOLUME_MIN_SAMPLES)
+      return shade_area(scene, k, hit, v, n, ctx);
+    AccelShadowView storage;
+    Scene view;
+    int few = n / 4 > GRID_UNOCCLUDED_MIN ? n / 4 : GRID_UNOCCLUDED_MIN;
+    if (accel_shadow_view(scene, hit, &light->quad, &storage, &view) == 0 &&
+        ctx->set->sampler == SAMPLER_GRID && few < n)
+      n = few;
+    return shade_area(&view, k, hit, v, n, ctx);
   }
   vec3s l;
   vec3s li = shade_incident(scene, &scene->lights[k], hit, &l, ctx);
