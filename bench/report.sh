@@ -5,7 +5,7 @@ set -uo pipefail
 cd "$(dirname "$0")/.."
 D=docs/bench; OUT=docs/benchmarks.md; TMP=$(mktemp -d)
 trap 'rm -rf "$TMP"' EXIT
-total=${1:-?}; POV=${2:-}; ALL=${3:-2}
+total=${1:-?}; POV=${2:-}; ALL=${3:-2}; LOADS=${4:-? ?}
 TARGET=5e-4
 
 # table CSV: a Markdown table of a CSV file.
@@ -33,7 +33,8 @@ family() {
   awk -F, 'NR > 1 {f = $2
     if ($1 == "ours") { sub(/ n=[0-9]+/, "", f); sub(/ light-samples=[0-9]+/, "", f)
       if (f == "sobol") f = "sobol (unbiased)"; f = "ours, " f }
-    else { sub(/ \+R[0-9]+/, "", f); sub(/area_light [0-9]+x[0-9]+ /, "", f); f = "POV-Ray, " f }
+    else { sub(/ \+R[0-9]+/, "", f); sub(/area_light [0-9]+x[0-9]+ ?/, "", f)
+      if (f == "") f = "regular grid"; f = "POV-Ray, " f }
     print f "\t" $3 "\t" $4 "\t" $6}' "$1"
 }
 plot_error() { # CSV PNG TITLE THREADS
@@ -87,7 +88,8 @@ cat <<EOF
 
 Written by \`make bench\` (bench/run.sh, bench/report.sh) on $(date -u +%Y-%m-%d) in
 ${total} s, on: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs), $(nproc) cores,
-$(gcc --version | head -n1), POV-Ray: ${POV:-not installed}. Every figure is a
+$(gcc --version | head -n1), POV-Ray: ${POV:-not installed}. Load average (other
+jobs on the machine) ${LOADS% *} at the start, ${LOADS#* } at the end. Every figure is a
 median over repeated runs in this one run (the CSV files hold min and max);
 the machines are shared and noisy, so compare within the run, not across
 runs. Trace time: the render loop (our summary line; POV-Ray's "Trace Time");
@@ -117,13 +119,16 @@ sampling: ours \`--sampler sobol --samples 512 --adaptive 0 --seed 4242\`
 (step 07; another seed, so no sample is shared with the runs) and \`--samples
 1 --light-samples 4096 --adaptive 0\` with the run's sampler (step 08; one
 camera sample, so only the light's sampling differs); POV-Ray \`+AM2 +R5
-+A0.0\` (step 07) and a 36x36 area light without the \`adaptive\` keyword, no
-antialiasing (step 08: every one of the 1296 shadow rays traced; 36 x 36
-shares no sample but the corners with the 2^m+1 grids measured). RMSE over
-all channels of the values clamped to [0, 1] (bench/rmse.c; POV-Ray writes
-16-bit linear PNG). Median of ${BENCH_ERR_RUNS:-3} runs. POV-Ray's step-07
-runs sample a subset of its reference's lattice (+R3 and +R4 lie on +R5's),
-which shares part of their error with the reference and favours POV-Ray.
++A0.0\` (step 07) and, for step 08, no antialiasing and the mean of two
+renders of a 32x32 area light without the \`adaptive\` keyword and with
+\`jitter\` (every one of the 1024 shadow rays traced, each at a random place
+in its cell: unbiased; POV-Ray's regular grids put samples on the light's
+edges with equal weights, which biases them by O(1/n), so a regular grid
+makes a poor reference). RMSE over all channels of the values clamped to
+[0, 1] (bench/rmse.c; POV-Ray writes 16-bit linear PNG). Median of
+${BENCH_ERR_RUNS:-3} runs. POV-Ray's step-07 runs sample a subset of its
+reference's lattice (+R3 and +R4 lie on +R5's), which shares part of their
+error with the reference and favours POV-Ray.
 
 ### Step 07: antialiasing
 
@@ -139,7 +144,9 @@ $(table "$D/error-07.csv" 2>/dev/null)
 
 Ours: \`--samples 1 --light-samples n --adaptive 0\` with the grid (midpoint
 rule) and Sobol patterns (Owen-scrambled, unbiased); POV-Ray's n x n area
-light, with and without \`adaptive\`.
+light: a regular grid, jittered (unbiased), or \`adaptive\` (it first traces
+the corners of the grid and subdivides where they differ: fast, but an
+occluder between corners is missed).
 
 ![error 08](bench/error-08.png)
 

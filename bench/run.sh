@@ -19,6 +19,7 @@ POV_SCENE=bench/spheres.pov
 have() { [ -x "$BIN/$1" ]; }
 log() { echo "bench: $*" >&2; }
 t_start=$EPOCHREALTIME
+load_start=$(cut -d' ' -f1 /proc/loadavg)
 # The thread counts measured: 2, and all cores when that is another count.
 TLIST="2"; [ "$ALL" != 2 ] && TLIST="2 $ALL"
 
@@ -102,10 +103,10 @@ err_ours() { # CSV STEP REF LABEL THREADS ARGS...
     -o "$B/e.pfm" "$@")
   echo "ours,$label,$t,$rm,$wm,$("$B/rmse" "$B/e.pfm" "$ref")" >> "$csv"
 }
-err_pov() { # CSV REF LABEL THREADS ARGS...
+err_pov() { # CSV "REF..." LABEL THREADS ARGS...
   local csv=$1 ref=$2 label=$3 t=$4; shift 4
   read -r tm _ _ wm _ _ < <(pov_n "$ERUNS" +W$W +H$H +WT$t +FN16 File_Gamma=1.0 +Oe.png "$@")
-  echo "povray,$label,$t,$tm,$wm,$("$B/rmse" "$B/e.png" "$ref")" >> "$csv"
+  echo "povray,$label,$t,$tm,$wm,$("$B/rmse" "$B/e.png" $ref)" >> "$csv"
 }
 if have 07-antialiasing; then
   log "run time against error, step 07 (${W}x$H)"
@@ -115,22 +116,29 @@ if have 07-antialiasing; then
   [ -n "$POV" ] && p07=$(ref_pov +W$W +H$H +WT"$ALL" +FN16 File_Gamma=1.0 Declare=Step=7 \
                          +AM2 +R5 +A0.0)
   for t in $TLIST; do
-    for n in 16 64 256; do
+    for n in 16 64; do
       err_ours "$D/error-07.csv" 07-antialiasing "$r07" "sobol n=$n" "$t" --sampler sobol \
         --samples "$n" --adaptive 0
     done
-    for n in 16 64 256 1024; do for a in 0.1 0.05 0.02; do
-      { [ "$n" = 16 ] || [ "$n" = 1024 ]; } && [ "$a" != 0.05 ] && continue
+    for set in "16 0.05" "64 0.1" "64 0.05" "256 0.1" "256 0.05" "256 0.02" "1024 0.05"; do
+      read -r n a <<<"$set"
       err_ours "$D/error-07.csv" 07-antialiasing "$r07" "adaptive n=$n T=$a" "$t" \
         --samples "$n" --adaptive "$a"
-    done; done
+    done
     [ -n "$POV" ] || continue
-    for r in 3 4 5; do for th in 0.3 0.1 0.03; do
-      [ "$r" = 5 ] && [ "$th" = 0.3 ] && continue
+    for set in "3 0.1" "4 0.1" "4 0.03" "5 0.1" "5 0.03" "5 0.01"; do
+      read -r r th <<<"$set"
       err_pov "$D/error-07.csv" "$p07" "+AM2 +R$r +A$th" "$t" Declare=Step=7 +AM2 +R$r +A$th
-    done; done
+    done
   done
 fi
+# povargs08 LABEL: POV-Ray's options for "area_light NxN[ adaptive A][ jitter]".
+povargs08() {
+  local x=${1#area_light } ad=-1; local n=${x%%x*}
+  [[ "$x" == *adaptive* ]] && { ad=${x#*adaptive }; ad=${ad%% *}; }
+  echo "-A Declare=Step=8 Declare=AreaN=$n Declare=AreaAdaptive=$ad$([[ "$x" == *jitter* ]] &&
+    echo " Declare=AreaJitter=1")"
+}
 if have 08-area-lights; then
   log "run time against error, step 08 (${W}x$H, 1 camera sample)"
   echo "$EH" > "$D/error-08.csv"
@@ -141,23 +149,27 @@ if have 08-area-lights; then
     r08=$(ref_ours 08-area-lights --width $W --height $H --threads "$ALL" --samples 1 \
           --sampler $smp --light-samples 4096 --adaptive 0)
     for t in $TLIST; do
-      for n in 16 64 144 256 400; do
+      for n in 64 144 256 400; do
+        [ $smp = sobol ] && { [ "$n" = 144 ] || [ "$n" = 400 ]; } && continue
         err_ours "$D/error-08.csv" 08-area-lights "$r08" "$smp light-samples=$n" "$t" \
           --samples 1 --sampler $smp --light-samples "$n" --adaptive 0
       done
     done
   done
   if [ -n "$POV" ]; then
-    # 36 x 36: no sample of the smaller grids (2^m + 1 per side) but the
-    # corners lies on it, so their errors are not shared with the reference.
-    p08=$(ref_pov +W$W +H$H +WT"$ALL" +FN16 File_Gamma=1.0 -A Declare=Step=8 Declare=AreaN=36 \
-          Declare=AreaAdaptive=-1)
+    # POV-Ray's reference: the mean of two renders with a jittered 32 x 32
+    # area light (a random place in each of the 1024 cells: unbiased; its
+    # regular grids put samples on the light's edges with equal weights,
+    # biased by O(1/n)).
+    p08a=$(ref_pov +W$W +H$H +WT"$ALL" +FN16 File_Gamma=1.0 -A Declare=Step=8 Declare=AreaN=32 \
+           Declare=AreaAdaptive=-1 Declare=AreaJitter=1 Declare=Ref=1)
+    p08b=$(ref_pov +W$W +H$H +WT"$ALL" +FN16 File_Gamma=1.0 -A Declare=Step=8 Declare=AreaN=32 \
+           Declare=AreaAdaptive=-1 Declare=AreaJitter=1 Declare=Ref=2)
     for t in $TLIST; do
-      for set in "5 -1" "9 -1" "17 -1" "9 1" "17 1" "33 1" "9 2" "17 2" "25 2" "33 2" "17 3" "33 3"; do
-        read -r n ad <<<"$set"
-        label="area_light ${n}x$n $([ "$ad" = -1 ] && echo "(no adaptive)" || echo "adaptive $ad")"
-        err_pov "$D/error-08.csv" "$p08" "$label" "$t" -A Declare=Step=8 Declare=AreaN=$n \
-          Declare=AreaAdaptive=$ad
+      for set in "9 -1 -" "9 -1 jitter" "17 -1 jitter" "24 -1 jitter" "17 2 -" "33 2 -"; do
+        read -r n ad jit <<<"$set"
+        label="area_light ${n}x$n$([ "$ad" = -1 ] || echo " adaptive $ad")$([ "$jit" = - ] || echo " jitter")"
+        err_pov "$D/error-08.csv" "$p08a $p08b" "$label" "$t" $(povargs08 "$label")
       done
     done
   fi
@@ -173,9 +185,6 @@ best() { # CSV RENDERER -> the setting with the least trace time at RMSE <= 5e-4
 args07() { case "$1" in "sobol n="*) echo "--sampler sobol --samples ${1#sobol n=} --adaptive 0";;
   "adaptive n="*) local x=${1#adaptive n=}; echo "--samples ${x% T=*} --adaptive ${x#* T=}";; esac; }
 args08() { echo "--samples 1 --sampler ${1% light-samples=*} --light-samples ${1#*light-samples=} --adaptive 0"; }
-povargs08() { local x=${1#area_light }; local n=${x%%x*}; case "$x" in
-  *"no adaptive"*) echo "-A Declare=Step=8 Declare=AreaN=$n Declare=AreaAdaptive=-1";;
-  *) echo "-A Declare=Step=8 Declare=AreaN=$n Declare=AreaAdaptive=${x##* }";; esac; }
 log "threads: 1 $TLIST"
 echo "picture,renderer,setting,threads,trace_med,wall_med" > "$D/threads.csv"
 thread_row() { # PICTURE RENDERER SETTING THREADS -> one row
@@ -236,4 +245,4 @@ if have 05-shadows; then
 fi
 
 t_total=$(awk -v a="$t_start" -v b="$EPOCHREALTIME" 'BEGIN {printf "%.0f", b - a}')
-bench/report.sh "$t_total" "$POV" "$ALL"
+bench/report.sh "$t_total" "$POV" "$ALL" "$load_start $(cut -d' ' -f1 /proc/loadavg)"

@@ -64,7 +64,8 @@ sphere { <1.3, 0.45, 1.8>, 0.45 Mat(<0.85, 0.85, 0.85>, 0.3, 16) }
   // POV-Ray centres the area light on the light's position.
   light_source { <0, 3.45, 0> rgb <20, 19, 16.5> / 2 fade_distance 1 fade_power 2
     area_light <2, 0, 0>, <0, 0.3, 1.2>, AreaN, AreaN
-    #if (AreaAdaptive >= 0) adaptive AreaAdaptive #end }
+    #if (AreaAdaptive >= 0) adaptive AreaAdaptive #end
+    #ifdef (AreaJitter) jitter #end }
   #declare E = 0.15;
 #end
 // Directional light, direction (-1, -2, -1), irradiance E.
