@@ -25,12 +25,13 @@
  * 0.4 X - 0.35 Y - 0.19 > 0, i.e. 0.8 nx - 0.7 ny - 0.24 > 0: the triangle
  * (0.3, 0), (1, 0), (1, 0.8) of the pixel, area 0.7 * 0.8 / 2 = 0.28. It is
  * white (ambient 1 times ambient colour 1), the rest black. */
+#define ONE_PIXEL                                                                \
+  "film 1 1\n"                                                                   \
+  "camera eye 0 0 0 center 0 0 -1 up 0 1 0 fov 90\n"                            \
+  "ambient 1 1 1\n"                                                              \
+  "material white ambient 1 1 1\n"
 static const char EDGE_SCENE[] =
-    "film 1 1\n"
-    "camera eye 0 0 0 center 0 0 -1 up 0 1 0 fov 90\n"
-    "ambient 1 1 1\n"
-    "material white ambient 1 1 1\n"
-    "plane point 0.4 -0.35 0.19 normal 0.4 -0.35 0.19 material white\n";
+    ONE_PIXEL "plane point 0.4 -0.35 0.19 normal 0.4 -0.35 0.19 material white\n";
 static const double EDGE_FRACTION = 0.28;
 
 /* Render `scene` (text, or NULL for the step's default) with `args` into a
@@ -171,6 +172,16 @@ Test(antialiasing, every_pixel_takes_its_own_sample_positions)
   CHECK_DONE(&c);
 }
 
+/* The pixel of `scene` with adaptive sampling down to k x k leaves
+ * (samples = 4 k^2) and a threshold of 0.01. */
+static double adaptive_pixel(const char *tag, const char *scene, int k)
+{
+  char args[128], name[64];
+  snprintf(args, sizeof args, "--samples %d --adaptive 0.01 --quiet", 4 * k * k);
+  snprintf(name, sizeof name, "%s-%d", tag, k);
+  return one_pixel(name, scene, args);
+}
+
 /* Adaptive sampling with k x k leaves (samples = 4 k^2): a square the edge
  * crosses has corners on both sides (the square is the hull of its corners),
  * so it is cut, down to the leaves; squares it does not cross are exact.
@@ -178,14 +189,11 @@ Test(antialiasing, every_pixel_takes_its_own_sample_positions)
 Test(antialiasing, adaptive_squares_converge_to_the_covered_fraction)
 {
   Check c = CHECK("pixel, square_mean (--adaptive T)", DOC_ADAPTIVE);
-  for (int k = 2; k <= 32; k *= 2) {
-    char args[128], tag[64];
-    snprintf(args, sizeof args, "--samples %d --adaptive 0.01 --quiet", 4 * k * k);
-    snprintf(tag, sizeof tag, "adaptive-%d", k);
-    CHECK_NEAR(&c, EDGE_FRACTION, one_pixel(tag, EDGE_SCENE, args), (2.0 * k - 1.0) / (k * k),
+  for (int k = 2; k <= 32; k *= 2)
+    CHECK_NEAR(&c, EDGE_FRACTION, adaptive_pixel("adaptive", EDGE_SCENE, k),
+               (2.0 * k - 1.0) / (k * k),
                "a pixel 28%% covered by a white triangle, --samples %d --adaptive 0.01 "
                "(squares cut down to 1/%d of the pixel): red", 4 * k * k, k);
-  }
   CHECK_DONE(&c);
 }
 
@@ -200,18 +208,12 @@ Test(antialiasing, adaptive_squares_converge_to_the_covered_fraction)
  * 0.7 + (e - (1 - f)) / k exactly (no lattice point lies on the edge). */
 Test(antialiasing, adaptive_squares_cut_down_to_the_leaves_along_an_edge)
 {
-  static const char scene[] = "film 1 1\n"
-                              "camera eye 0 0 0 center 0 0 -1 up 0 1 0 fov 90\n"
-                              "ambient 1 1 1\n"
-                              "material white ambient 1 1 1\n"
-                              "plane point 0.5 0 -0.2 normal 0.5 0 -0.2 material white\n";
+  static const char scene[] =
+      ONE_PIXEL "plane point 0.5 0 -0.2 normal 0.5 0 -0.2 material white\n";
   Check c = CHECK("square_mean", DOC_ADAPTIVE);
   for (int k = 2; k <= 32; k *= 2) {
     double f = 0.3 * k - floor(0.3 * k), e = (0.5 + (f < 0.5)) / 2.0;
-    char args[128], tag[64];
-    snprintf(args, sizeof args, "--samples %d --adaptive 0.01 --quiet", 4 * k * k);
-    snprintf(tag, sizeof tag, "vertical-%d", k);
-    CHECK_NEAR(&c, 0.7 + (e - (1.0 - f)) / k, one_pixel(tag, scene, args), 1e-6,
+    CHECK_NEAR(&c, 0.7 + (e - (1.0 - f)) / k, adaptive_pixel("vertical", scene, k), 1e-6,
                "a pixel white right of x = 0.3, --samples %d --adaptive 0.01 (leaves 1/%d of "
                "the pixel): red", 4 * k * k, k);
   }
@@ -224,11 +226,7 @@ Test(antialiasing, adaptive_squares_cut_down_to_the_leaves_along_an_edge)
  * never cut: (mean of the corners + centre) / 2 = (0 + 1) / 2. */
 Test(antialiasing, a_square_whose_samples_agree_is_its_corners_and_centre_half_each)
 {
-  static const char scene[] = "film 1 1\n"
-                              "camera eye 0 0 0 center 0 0 -1 up 0 1 0 fov 90\n"
-                              "ambient 1 1 1\n"
-                              "material white ambient 1 1 1\n"
-                              "sphere center 0 0 -1 radius 0.1 material white\n";
+  static const char scene[] = ONE_PIXEL "sphere center 0 0 -1 radius 0.1 material white\n";
   Check c = CHECK("square_mean", DOC_ADAPTIVE);
   CHECK_NEAR(&c, 0.5, one_pixel("centre-half", scene, "--samples 64 --adaptive 2 --quiet"),
              1e-6, "white at the pixel's centre, black at its four corners, never cut "
