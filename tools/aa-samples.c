@@ -2,8 +2,9 @@
  * docs/07-antialiasing.md, "Adaptive sampling". Not a step: it compiles step
  * 07's main.c in (so the pixels are the step's own), counts every distinct
  * point render_point traces inside each pixel's square (its bottom and left
- * sides included: each point counts once, in one pixel), and draws the counts: dark blue 2 (a corner and the
- * centre), up to white at the largest count. tools/aa-mistakes.sh runs it.
+ * sides included: each point counts once, in one pixel), and draws the
+ * counts: dark blue 2 (a corner and the centre), up to white at the largest
+ * count. tools/aa-mistakes.sh runs it.
  * Usage: aa-samples W H SAMPLES THRESHOLD OUT.png */
 #include <stdio.h>
 #include <stdlib.h>
