@@ -170,14 +170,17 @@ $(table "$D/error-08.csv" 2>/dev/null)
 
 Trace and whole-process time (s, median of ${BENCH_ERR_RUNS:-3}) at 1, 2 and all
 threads: step 05's one-sample frame of scenes/spheres.scene, and each
-renderer's setting that reached RMSE $TARGET soonest above (800x600). ${all_note}.
+renderer's best setting above (800x600): the one that reached RMSE $TARGET
+soonest, or the one with its lowest error when it reached none. ${all_note}.
 
 $(table "$th" 2>/dev/null)
 
 ## Throughput: scenes/spheres.scene at 800x600
 
 Each step renders the canonical scene (5 spheres, a plane, a point and a
-directional light; from step 05 on with hard shadows; 1 sample per pixel),
+directional light; from step 05 on with hard shadows; the scene's 1 sample per
+pixel: step 07's adaptive default then traces each pixel's corners, shared,
+and its centre, about 2 camera rays per pixel),
 \`build/bin/NN-name --scene scenes/spheres.scene --threads T -o x.png\`.
 
 $(table "$tp")
