@@ -83,9 +83,9 @@ head_rows() { # THREADS: the rows of the headline table at that thread count
     echo "| step $step reaches RMSE $TARGET in at most 1/2 of POV-Ray's best trace time | $t | $ot s \`$os\` | $pt s \`$ps\` | $r (whole process $wr) | $verdict |"
   done
 }
-o5t=$(awk -F, '$1 == "05-shadows" && $2 == 2 {print $4}' "$tp")
-o5w=$(awk -F, '$1 == "05-shadows" && $2 == 2 {print $8}' "$tp")
-p5t=$(col "$D/povray.csv" 1 2 2); p5w=$(col "$D/povray.csv" 1 2 5)
+s5=$D/step05.csv
+o5t=$(awk -F, '$1 == "ours" && $2 == 2 {print $3}' "$s5"); o5w=$(awk -F, '$1 == "ours" && $2 == 2 {print $4}' "$s5")
+p5t=$(awk -F, '$1 == "povray" && $2 == 2 {print $3}' "$s5"); p5w=$(awk -F, '$1 == "povray" && $2 == 2 {print $4}' "$s5")
 r5t=$(ratio "$p5t" "$o5t"); r5w=$(ratio "$p5w" "$o5w")
 w3=$(col "$D/scaling.csv" 1 1000 5); w6=$(col "$D/scaling.csv" 1 1000000 5)
 r6=$(ratio "$w6" "$w3")
@@ -118,6 +118,9 @@ $(for t in $(awk -F, 'NR > 1 {print $3}' "$D/error-07.csv" 2>/dev/null | sort -u
 | step 05, one sample: whole process >= 20x POV-Ray's | 2 | ${o5w:-n/a} s | ${p5w:-n/a} s | ${r5w} | $(met "${r5w%x}" 20) |
 | 10^6 spheres: whole process <= 3x that of 10^3 | 2 | ${w6:-n/a} s (10^6) | ${w3:-n/a} s (10^3, ours) | ${r6} | $(met "${r6%x}" 3 le) |
 
+Step 05: \`build/bin/05-shadows --scene scenes/spheres.scene --threads 2 -o
+x.png\` and \`povray -D +W800 +H600 +WT2 Declare=Step=5 bench/spheres.pov\`, run
+in turn ${BENCH_RUNS:-9} times each, medians (docs/bench/step05.csv).
 The steps 07 and 08 rows compare each renderer's least trace time among the
 settings below whose RMSE is at most $TARGET (a setting listed is the one
 that got there soonest). Where POV-Ray reached no error that low in the

@@ -92,6 +92,24 @@ if [ -n "$POV" ]; then
   done
 fi
 
+# Step 05's one-sample frame against POV-Ray's, the two run in turn (ours,
+# POV-Ray, ours, ...) so that a change of the machine's load hits both: the
+# headline's figures.
+echo "renderer,threads,trace_med,wall_med" > "$D/step05.csv"
+if [ -n "$POV" ] && have 05-shadows; then
+  log "step 05 and POV-Ray in turn ($RUNS pairs)"
+  for t in $TLIST; do
+    o=""; p=""
+    for _ in $(seq "$RUNS"); do
+      o+="$(ours 05-shadows --scene scenes/spheres.scene --threads "$t" -o "$B/tp.png")"$'\n'
+      p+="$(pov +W$W +H$H +WT"$t" Declare=Step=5 +Opov5.png)"$'\n'
+    done
+    med() { grep -v '^$' | stats | cut -d' ' -f1; }
+    echo "ours,$t,$(cut -d' ' -f1 <<<"$o" | med),$(cut -d' ' -f3 <<<"$o" | med)" >> "$D/step05.csv"
+    echo "povray,$t,$(cut -d' ' -f1 <<<"$p" | med),$(cut -d' ' -f2 <<<"$p" | med)" >> "$D/step05.csv"
+  done
+fi
+
 # ---------------------------------------------------------------- error
 # CSV rows: renderer,setting,threads,trace_s,wall_s,rmse. RMSE over all
 # channels of the values clamped to [0, 1], against the renderer's own
@@ -168,7 +186,7 @@ if have 08-area-lights; then
     p08b=$(ref_pov +W$W +H$H +WT"$ALL" +FN16 File_Gamma=1.0 -A Declare=Step=8 Declare=AreaN=32 \
            Declare=AreaAdaptive=-1 Declare=AreaJitter=1 Declare=Ref=2)
     for t in $TLIST; do
-      for set in "9 -1 jitter" "17 -1 jitter" "17 2 -" "33 2 -"; do
+      for set in "9 -1 jitter" "17 -1 jitter" "24 -1 jitter" "17 2 -" "33 2 -"; do
         read -r n ad jit <<<"$set"
         label="area_light ${n}x$n$([ "$ad" = -1 ] || echo " adaptive $ad")$([ "$jit" = - ] || echo " jitter")"
         err_pov "$D/error-08.csv" "$p08a $p08b" "$label" "$t" $(povargs08 "$label")
