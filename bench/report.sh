@@ -171,8 +171,8 @@ $(table "$D/error-08.csv" 2>/dev/null)
 
 ## Threads
 
-Trace and whole-process time (s, median of ${BENCH_ERR_RUNS:-3}) at 1, 2 and all
-threads: step 05's one-sample frame of scenes/spheres.scene, and each
+Trace and whole-process time (s, median of ${BENCH_ERR_RUNS:-3}; one run for a
+setting that took more than 5 s above) at 1, 2 and all threads: step 05's one-sample frame of scenes/spheres.scene, and each
 renderer's best setting above (800x600): the one that reached RMSE $TARGET
 soonest, or the one with its lowest error when it reached none. ${all_note}.
 
