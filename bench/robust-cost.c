@@ -1,6 +1,9 @@
 /* What the robust geometry costs (docs/accuracy.md, "Cost"): step 05's frame
- * (Phong, hard shadows) rendered in one process with common/'s geometry and
- * with the textbook formulas of tests/textbook.h, same shading, same threads.
+ * (Phong, hard shadows) rendered in one process through step 05's own
+ * shade_trace, with common/'s intersection tests and with the textbook ones
+ * of tests/textbook.h (installed as the scene's index), same threads. The hit
+ * records (*_fill) and the shadow rays' start (ray_spawn) are step 05's in
+ * every frame: only the tests differ.
  * Usage: robust-cost [RUNS [THREADS [SCENE [OUT_PREFIX]]]]. */
 #include <stdio.h>
 #include <stdlib.h>
@@ -13,55 +16,38 @@
 #include "shade.h"
 #include "textbook.h"
 
-/* The geometry of the other frames. TEXTBOOK: b^2 - c, p = o + t d, a fixed
- * offset; FLOAT_BC: the robust formula with b and c formed in float, to price
- * sphere.c's double-precision b and c (the rest as in common/). */
+/* The other frames' intersection tests: TEXTBOOK (b^2 - c) or FLOAT_BC (the
+ * robust formula with b and c formed in float, to price sphere.c's
+ * double-precision b and c); planes and quads keep the library's. */
 typedef enum Geometry { TEXTBOOK, FLOAT_BC } Geometry;
 
-/* One shape's distance, out of line like the library's accel_instance_hit_t
- * (which then calls sphere_hit_t: one call more on the robust side). */
-__attribute__((noinline)) static float other_hit_t(const Instance *in, Ray r, float tmax,
-                                                   Geometry g)
+static float other_hit_t(const Instance *in, Ray r, float tmax, Geometry g)
 {
-  switch (in->shape) {
-  case SHAPE_SPHERE:
+  if (in->shape == SHAPE_SPHERE)
     return g == TEXTBOOK ? textbook_sphere_t(&in->sphere, r, tmax)
                          : float_bc_sphere_t(&in->sphere, r, tmax);
-  case SHAPE_PLANE:
-    return g == TEXTBOOK ? textbook_plane_t(&in->plane, r, tmax)
-                         : plane_hit_t(&in->plane, r, tmax);
-  default: return scene_instance_hit_t(in, r, tmax);
-  }
+  if (in->shape == SHAPE_PLANE && g == TEXTBOOK)
+    return textbook_plane_t(&in->plane, r, tmax);
+  return scene_instance_hit_t(in, r, tmax);
 }
 
-/* scene_intersect's plain loop with another geometry. */
-static bool other_intersect(const Scene *sc, Ray r, float tmax, Hit *hit, Geometry g)
+/* A SceneIndex that tests every instance in order, as scene.c's plain loop,
+ * with geometry g: installed as scene->index, it changes only the tests;
+ * the frame is still step 05's shade_trace, the hit records its *_fill. */
+static const Instance *other_closest(const Scene *sc, Ray r, float *tmax, Geometry g)
 {
   const Instance *best = NULL;
   for (int k = 0; k < sc->n_instances; k++) {
-    float t = other_hit_t(&sc->instances[k], r, tmax, g);
-    if (t < tmax) {
-      tmax = t;
+    float t = other_hit_t(&sc->instances[k], r, *tmax, g);
+    if (t < *tmax) {
+      *tmax = t;
       best = &sc->instances[k];
     }
   }
-  if (!best)
-    return false;
-  if (g == TEXTBOOK && best->shape == SHAPE_SPHERE)
-    textbook_sphere_fill(&best->sphere, r, tmax, hit);
-  else if (g == TEXTBOOK && best->shape == SHAPE_PLANE)
-    textbook_plane_fill(&best->plane, r, tmax, hit);
-  else if (best->shape == SHAPE_SPHERE)
-    sphere_hit_fill(&best->sphere, r, tmax, hit);
-  else if (best->shape == SHAPE_PLANE)
-    plane_hit_fill(&best->plane, r, tmax, hit);
-  else
-    quad_hit_fill(&best->quad, r, tmax, hit);
-  hit->inst = best;
-  return true;
+  return best;
 }
 
-static bool other_occluded(const Scene *sc, Ray r, float tmax, Geometry g)
+static bool other_any(const Scene *sc, Ray r, float tmax, Geometry g)
 {
   for (int k = 0; k < sc->n_shapes; k++)
     if (other_hit_t(&sc->instances[k], r, tmax, g) < tmax)
@@ -69,68 +55,47 @@ static bool other_occluded(const Scene *sc, Ray r, float tmax, Geometry g)
   return false;
 }
 
-/* steps/05-shadows/shade.c's shade_trace, shade_phong and shade_incident in
- * one function, with another geometry (the robust frame is step 05's own
- * shade_trace, linked in). Inlined into each pixel function below, so g is a
- * constant there. */
-static inline __attribute__((always_inline)) vec3s trace(const Scene *sc, Ray ray,
-                                                         RenderCtx *ctx, Geometry g)
+static const Instance *textbook_closest(const Scene *sc, Ray r, float *tmax)
 {
-  Hit hit;
-  ctx->rays++;
-  if (!other_intersect(sc, ray, INFINITY, &hit, g))
-    return sc->background;
-  const Material *m = &sc->materials[hit.inst->material];
-  vec3s c = glms_vec3_zero(), v = glms_vec3_normalize(glms_vec3_sub(ray.o, hit.p));
-  for (int k = 0; k < sc->n_lights; k++) {
-    vec3s l;
-    float dist;
-    vec3s li = light_incident(&sc->lights[k], hit.p, hit.p_err, &l, &dist);
-    float n_dot_l = glms_vec3_dot(hit.n, l);
-    if (!(n_dot_l > 0.0f))
-      continue;
-    Ray sh = g == TEXTBOOK ? textbook_spawn(&hit, l) : ray_spawn(&hit, l);
-    ctx->rays++;
-    if (other_occluded(sc, sh, dist * (1.0f - 0x1p-20f), g))
-      continue;
-    c = glms_vec3_add(c, glms_vec3_scale(glms_vec3_mul(m->diffuse, li), n_dot_l));
-    if (!vec_is_zero(m->specular)) {
-      vec3s r = vec_reflect(glms_vec3_negate(l), hit.n);
-      float lobe = powf(fmaxf(0.0f, glms_vec3_dot(r, v)), m->shininess);
-      c = glms_vec3_add(c, glms_vec3_scale(glms_vec3_mul(m->specular, li), lobe));
-    }
-  }
-  return c;
+  return other_closest(sc, r, tmax, TEXTBOOK);
 }
+static bool textbook_any(const Scene *sc, Ray r, float tmax)
+{
+  return other_any(sc, r, tmax, TEXTBOOK);
+}
+static const Instance *float_bc_closest(const Scene *sc, Ray r, float *tmax)
+{
+  return other_closest(sc, r, tmax, FLOAT_BC);
+}
+static bool float_bc_any(const Scene *sc, Ray r, float tmax)
+{
+  return other_any(sc, r, tmax, FLOAT_BC);
+}
+static void keep(SceneIndex *index)
+{
+  (void)index; /* static: nothing to free */
+}
+static SceneIndex textbook_index = {textbook_closest, textbook_any, keep};
+static SceneIndex float_bc_index = {float_bc_closest, float_bc_any, keep};
 
-static vec3s px_robust(const Scene *sc, const Film *film, int i, int j, RenderCtx *ctx)
+/* Step 05's pixel: the centre sample through step 05's own shade_trace. */
+static vec3s px(const Scene *sc, const Film *film, int i, int j, RenderCtx *ctx)
 {
   vec2s s = film_sample(film, i, j);
   return shade_trace(sc, camera_ray(&sc->camera, s.x, s.y), ctx);
 }
 
-static vec3s px_textbook(const Scene *sc, const Film *film, int i, int j, RenderCtx *ctx)
-{
-  vec2s s = film_sample(film, i, j);
-  return trace(sc, camera_ray(&sc->camera, s.x, s.y), ctx, TEXTBOOK);
-}
-
-static vec3s px_float_bc(const Scene *sc, const Film *film, int i, int j, RenderCtx *ctx)
-{
-  vec2s s = film_sample(film, i, j);
-  return trace(sc, camera_ray(&sc->camera, s.x, s.y), ctx, FLOAT_BC);
-}
-
-/* The frames compared: which scene (0 shipped layout, 1 plain loop) and pixel. */
+/* The frames compared: which scene (0 shipped index, 1 plain loop) and which
+ * index replaces the plain loop's (NULL: scene.c's own loop). */
 static const struct Variant {
   const char *name;
   int scene;
-  RenderPixelFn pixel;
+  SceneIndex *index;
 } variants[] = {
-    {"robust, shipped path (SIMD blocks / BVH)", 0, px_robust},
-    {"robust, plain loop (RT_ACCEL=loop)", 1, px_robust},
-    {"robust with float b and c, plain loop", 1, px_float_bc},
-    {"textbook, plain loop", 1, px_textbook},
+    {"robust, shipped index (one leaf / BVH)", 0, NULL},
+    {"robust, plain loop (RT_ACCEL=loop)", 1, NULL},
+    {"robust with float b and c, plain loop", 1, &float_bc_index},
+    {"textbook, plain loop", 1, &textbook_index},
 };
 enum { N_VAR = sizeof variants / sizeof variants[0], MAX_RUNS = 101 };
 
@@ -175,7 +140,10 @@ int main(int argc, char **argv)
   for (int run = -1; run < runs; run++) {
     for (int v = 0; v < N_VAR; v++) {
       RenderStats st;
-      render(&sc[variants[v].scene], &film, variants[v].pixel, &set, &st);
+      Scene view = sc[variants[v].scene];
+      if (variants[v].index)
+        view.index = variants[v].index;
+      render(&view, &film, px, &set, &st);
       if (run >= 0)
         sec[v][run] = st.seconds;
       else if (prefix) {

@@ -1,26 +1,33 @@
 #!/usr/bin/env bash
-# `make bench`: throughput, run time against error, scaling, and POV-Ray side
-# by side, in one run. Writes docs/benchmarks.md, its plots docs/bench/*.png
-# and the CSV they are drawn from (docs/bench/*.csv). It reports; it never
-# fails on a figure. BENCH_RUNS (default 9) sets the repetitions of timings.
+# `make bench`: throughput, run time against error at 800x600, thread scaling
+# and POV-Ray side by side, in one run. Writes docs/benchmarks.md, its plots
+# docs/bench/*.png and the CSV files they are drawn from (docs/bench/*.csv).
+# It reports; it never fails on a figure. Environment: BENCH_RUNS (default 9)
+# repetitions of the throughput timings, BENCH_ERR_RUNS (3) of the error
+# sweeps, THREADS_ALL (default: nproc) the "all cores" thread count.
 set -uo pipefail
 cd "$(dirname "$0")/.."
-B=build/bench; D=docs/bench; BIN=build/bin
-RUNS=${BENCH_RUNS:-9}; ERUNS=${BENCH_ERR_RUNS:-5}
-mkdir -p "$B" "$D"
+B=build/bench; D=docs/bench; BIN=build/bin; REF=$B/refs
+RUNS=${BENCH_RUNS:-9}; ERUNS=${BENCH_ERR_RUNS:-3}; ALL=${THREADS_ALL:-$(nproc)}
+W=800; H=600
+mkdir -p "$B" "$D" "$REF"
 CFL="-std=c11 -O2 -Icommon $(pkg-config --cflags cglm stb)"
 gcc $CFL bench/gen_spheres.c -lm -o "$B/gen_spheres" || exit 1
-gcc $CFL bench/rmse.c build/libcommon.a -lpng -lstb -lm -o "$B/rmse" || exit 1
+gcc $CFL bench/rmse.c build/libcommon.a -fopenmp -lpng -lstb -lm -o "$B/rmse" || exit 1
 POV=$(command -v povray || true)
+POV_SCENE=bench/spheres.pov
 have() { [ -x "$BIN/$1" ]; }
 log() { echo "bench: $*" >&2; }
 t_start=$EPOCHREALTIME
+load_start=$(cut -d' ' -f1 /proc/loadavg)
+# The thread counts measured: 2, and all cores when that is another count.
+TLIST="2"; [ "$ALL" != 2 ] && TLIST="2 $ALL"
 
 # stats: numbers on stdin -> "median min max".
 stats() { sort -g | awk '{v[NR]=$1} END {if (!NR) {print "nan nan nan"; exit}
   m = NR % 2 ? v[(NR+1)/2] : (v[NR/2] + v[NR/2+1]) / 2; printf "%.6g %.6g %.6g\n", m, v[1], v[NR]}'; }
 
-# ours STEP ARGS...: one run -> "render_s mrays wall_s" (summary line + wall clock).
+# ours STEP ARGS...: one run -> "trace_s mrays wall_s" (summary line + wall clock).
 ours() {
   local step=$1; shift
   local t0=$EPOCHREALTIME line
@@ -29,16 +36,16 @@ ours() {
   sed -E 's/.* ([0-9.]+) Mrays in ([0-9.]+) s .*/\2 \1/' <<<"$line" | tr '\n' ' '
   awk -v a="$t0" -v b="$t1" 'BEGIN {printf "%.6f\n", b - a}'
 }
-# ours_n N STEP ARGS...: N runs -> "render_med min max wall_med min max mrays".
+# ours_n N STEP ARGS...: N runs -> "trace_med min max wall_med min max mrays".
 ours_n() {
   local n=$1; shift
   local out; out=$(for _ in $(seq "$n"); do ours "$@"; done)
   echo "$(cut -d' ' -f1 <<<"$out" | stats) $(cut -d' ' -f3 <<<"$out" | stats) $(head -n1 <<<"$out" | cut -d' ' -f2)"
 }
-# pov ARGS...: one POV-Ray run -> "trace_s wall_s".
+# pov ARGS...: one POV-Ray run (PNG out) -> "trace_s wall_s".
 pov() {
   local t0=$EPOCHREALTIME tr
-  tr=$(cd "$B" && "$POV" -D -V +GS +GR "$@" ../../bench/spheres.pov 2>&1 | tr '\r' '\n' |
+  tr=$(cd "$B" && "$POV" -D -V +GS +GR "$@" "../../$POV_SCENE" 2>&1 | tr '\r' '\n' |
        sed -nE 's/.*Trace Time:.*\(([0-9.]+) seconds\).*/\1/p' | tail -n 1)
   local t1=$EPOCHREALTIME
   awk -v tr="${tr:-nan}" -v a="$t0" -v b="$t1" 'BEGIN {printf "%s %.6f\n", tr, b - a}'
@@ -48,13 +55,29 @@ pov_n() {
   local out; out=$(for _ in $(seq "$n"); do pov "$@"; done)
   echo "$(cut -d' ' -f1 <<<"$out" | stats) $(cut -d' ' -f2 <<<"$out" | stats)"
 }
+# Converged references are kept in build/bench/refs/, named by a checksum of
+# the program, the scene and the options: a later run reuses them.
+key() { cat "$@" 2>/dev/null | md5sum | cut -c1-16; }
+ref_ours() { # STEP ARGS... -> prints the reference's path
+  local step=$1; shift
+  local f; f="$REF/$step-$(key "$BIN/$step" <(echo "$@")).pfm"
+  [ -s "$f" ] || { log "reference: $step $*"; "$BIN/$step" --quiet "$@" -o "$f.tmp.pfm" &&
+                   mv "$f.tmp.pfm" "$f"; }
+  echo "$f"
+}
+ref_pov() { # ARGS... -> prints the reference's path (16-bit linear PNG)
+  local f; f="$REF/pov-$(key "$POV" "$POV_SCENE" <(echo "$@")).png"
+  [ -s "$f" ] || { log "reference: povray $*"; (cd "$B" && "$POV" -D -V +GS +GR "$@" \
+      +O"refs/tmp.png" "../../$POV_SCENE" >/dev/null 2>&1) && mv "$REF/tmp.png" "$f"; }
+  echo "$f"
+}
 
 # ---------------------------------------------------------------- throughput
-log "throughput (steps 04-08 on scenes/spheres.scene, 800x600, $RUNS runs)"
-echo "step,threads,mrays,render_med,render_min,render_max,mrays_per_s,wall_med,wall_min,wall_max" > "$D/throughput.csv"
+log "throughput (steps 04-08 on scenes/spheres.scene, ${W}x$H, $RUNS runs)"
+echo "step,threads,mrays,trace_med,trace_min,trace_max,mrays_per_s,wall_med,wall_min,wall_max" > "$D/throughput.csv"
 for s in 04-phong 05-shadows 06-ambient 07-antialiasing 08-area-lights; do
   have "$s" || continue
-  for t in 1 2; do
+  for t in 1 $TLIST; do
     read -r rm rlo rhi wm wlo whi mr < <(ours_n "$RUNS" "$s" --scene scenes/spheres.scene \
       --threads "$t" -o "$B/tp.png")
     echo "$s,$t,$mr,$rm,$rlo,$rhi,$(awk -v a="$mr" -v b="$rm" 'BEGIN{printf "%.2f", a/b}'),$wm,$wlo,$whi" >> "$D/throughput.csv"
@@ -63,108 +86,191 @@ done
 echo "threads,trace_med,trace_min,trace_max,wall_med,wall_min,wall_max" > "$D/povray.csv"
 if [ -n "$POV" ]; then
   log "POV-Ray, same scene"
-  for t in 1 2; do
-    read -r a b c d e f < <(pov_n "$RUNS" +W800 +H600 +WT$t Declare=Step=5 +Opov5.png)
+  for t in 1 $TLIST; do
+    read -r a b c d e f < <(pov_n "$RUNS" +W$W +H$H +WT$t Declare=Step=5 +Opov5.png)
     echo "$t,$a,$b,$c,$d,$e,$f" >> "$D/povray.csv"
   done
 fi
 
-# ---------------------------------------------------------------- error
-# err_ours CSV STEP REF LABEL ARGS...: time (median of ERUNS) and RMSE vs REF.
-err_ours() {
-  local csv=$1 step=$2 ref=$3 label=$4; shift 4
-  read -r rm _ _ wm _ _ _ < <(ours_n "$ERUNS" "$step" --width 320 --height 240 --threads 2 \
-    -o "$B/e.pfm" "$@")
-  echo "ours,$label,$rm,$wm,$("$B/rmse" "$B/e.pfm" "$ref")" >> "$csv"
-}
-err_pov() {
-  local csv=$1 ref=$2 label=$3; shift 3
-  read -r tm _ _ wm _ _ < <(pov_n "$ERUNS" +W320 +H240 +WT2 +FN16 File_Gamma=1.0 +Oe.png "$@")
-  echo "povray,$label,$tm,$wm,$("$B/rmse" "$B/e.png" "$ref")" >> "$csv"
-}
-EH="renderer,setting,trace_s,wall_s,rmse"
-if have 07-antialiasing; then
-  log "run time against error, step 07 (320x240)"
-  echo "$EH" > "$D/error-07.csv"
-  # The converged image without adaptive sampling (step 07's default is on):
-  # adaptive pixels stop early, so a reference made with it is biased.
-  "$BIN/07-antialiasing" --width 320 --height 240 --threads 2 --quiet --sampler sobol \
-    --samples 1024 --adaptive 0 -o "$B/ref07.pfm"
-  for smp in grid random jitter sobol; do
-    for n in 1 4 16 32 48 64 256; do
-      [ "$n" = 256 ] && [ "$smp" != sobol ] && continue
-      [ "$n" = 32 ] && [ "$smp" != sobol ] && continue
-      for a in 0 0.02 0.05; do
-        [ "$a" != 0 ] && [ "$n" -le 4 ] && continue
-        [ "$a" = 0.05 ] && [ "$smp" != sobol ] && continue
-        err_ours "$D/error-07.csv" 07-antialiasing "$B/ref07.pfm" "$smp n=$n adaptive=$a" \
-          --sampler "$smp" --samples "$n" --adaptive "$a"
-      done
+# Step 05's one-sample frame against POV-Ray's, the two run in turn (ours,
+# POV-Ray, ours, ...) so that a change of the machine's load hits both: the
+# headline's figures.
+echo "renderer,threads,trace_med,wall_med" > "$D/step05.csv"
+if [ -n "$POV" ] && have 05-shadows; then
+  log "step 05 and POV-Ray in turn ($RUNS pairs)"
+  for t in $TLIST; do
+    o=""; p=""
+    for _ in $(seq "$RUNS"); do
+      o+="$(ours 05-shadows --scene scenes/spheres.scene --threads "$t" -o "$B/tp.png")"$'\n'
+      p+="$(pov +W$W +H$H +WT"$t" Declare=Step=5 +Opov5.png)"$'\n'
     done
+    med() { grep -v '^$' | stats | cut -d' ' -f1; }
+    echo "ours,$t,$(cut -d' ' -f1 <<<"$o" | med),$(cut -d' ' -f3 <<<"$o" | med)" >> "$D/step05.csv"
+    echo "povray,$t,$(cut -d' ' -f1 <<<"$p" | med),$(cut -d' ' -f2 <<<"$p" | med)" >> "$D/step05.csv"
   done
-  if [ -n "$POV" ]; then
-    (cd "$B" && "$POV" -D +W320 +H240 +WT2 +FN16 File_Gamma=1.0 Declare=Step=7 \
-      +A0.0 +AM2 +R5 +Oref07pov.png ../../bench/spheres.pov >/dev/null 2>&1)
-    err_pov "$D/error-07.csv" "$B/ref07pov.png" "no AA" Declare=Step=7 -A
-    for am in 1 2; do for r in 2 3 4; do for th in 0.3 0.1 0.03 0.01; do
-      [ "$am" = 1 ] && [ "$r" = 4 ] && continue
-      err_pov "$D/error-07.csv" "$B/ref07pov.png" "+AM$am +R$r +A$th" Declare=Step=7 \
-        +A$th +AM$am +R$r
-    done; done; done
-  fi
 fi
+
+# ---------------------------------------------------------------- error
+# CSV rows: renderer,setting,threads,trace_s,wall_s,rmse. RMSE over all
+# channels of the values clamped to [0, 1], against the renderer's own
+# converged reference, rendered without adaptive sampling.
+EH="renderer,setting,threads,trace_s,wall_s,rmse"
+err_ours() { # CSV STEP REF LABEL THREADS ARGS...
+  local csv=$1 step=$2 ref=$3 label=$4 t=$5; shift 5
+  read -r rm _ _ wm _ _ _ < <(ours_n "$ERUNS" "$step" --width $W --height $H --threads "$t" \
+    -o "$B/e.pfm" "$@")
+  echo "ours,$label,$t,$rm,$wm,$("$B/rmse" "$B/e.pfm" "$ref")" >> "$csv"
+}
+err_pov() { # CSV "REF..." LABEL THREADS ARGS...
+  local csv=$1 ref=$2 label=$3 t=$4; shift 4
+  read -r tm _ _ wm _ _ < <(pov_n "$ERUNS" +W$W +H$H +WT$t +FN16 File_Gamma=1.0 +Oe.png "$@")
+  echo "povray,$label,$t,$tm,$wm,$("$B/rmse" "$B/e.png" $ref)" >> "$csv"
+}
+if have 07-antialiasing; then
+  log "run time against error, step 07 (${W}x$H)"
+  echo "$EH" > "$D/error-07.csv"
+  r07=$(ref_ours 07-antialiasing --width $W --height $H --threads "$ALL" --samples 512 \
+        --sampler sobol --adaptive 0 --seed 4242)
+  # POV-Ray's reference one level finer than its finest run (+R6 over +R5),
+  # so that no run is measured against its own lattice.
+  [ -n "$POV" ] && p07=$(ref_pov +W$W +H$H +WT"$ALL" +FN16 File_Gamma=1.0 Declare=Step=7 \
+                         +AM2 +R6 +A0.0)
+  for t in $TLIST; do
+    for n in 16 64; do
+      err_ours "$D/error-07.csv" 07-antialiasing "$r07" "sobol n=$n" "$t" --sampler sobol \
+        --samples "$n" --adaptive 0
+    done
+    for set in "16 0.05" "64 0.1" "64 0.05" "256 0.1" "256 0.05" "256 0.02" "1024 0.05"; do
+      read -r n a <<<"$set"
+      err_ours "$D/error-07.csv" 07-antialiasing "$r07" "adaptive n=$n T=$a" "$t" \
+        --samples "$n" --adaptive "$a"
+    done
+    [ -n "$POV" ] || continue
+    for set in "3 0.1" "4 0.1" "4 0.03" "5 0.1" "5 0.03" "5 0.01"; do
+      read -r r th <<<"$set"
+      err_pov "$D/error-07.csv" "$p07" "+AM2 +R$r +A$th" "$t" Declare=Step=7 +AM2 +R$r +A$th
+    done
+  done
+fi
+# povargs08 LABEL: POV-Ray's options for "area_light NxN[ adaptive A][ jitter]".
+povargs08() {
+  local x=${1#area_light } ad=-1; local n=${x%%x*}
+  [[ "$x" == *adaptive* ]] && { ad=${x#*adaptive }; ad=${ad%% *}; }
+  echo "-A Declare=Step=8 Declare=AreaN=$n Declare=AreaAdaptive=$ad$([[ "$x" == *jitter* ]] &&
+    echo " Declare=AreaJitter=1")"
+}
 if have 08-area-lights; then
-  log "run time against error, step 08 (320x240, 1 camera sample)"
+  log "run time against error, step 08 (${W}x$H, 1 camera sample)"
   echo "$EH" > "$D/error-08.csv"
-  for smp in grid jitter sobol; do
-    # Reference without adaptive light sampling (on by default): unbiased.
-    "$BIN/08-area-lights" --width 320 --height 240 --threads 2 --quiet --sampler "$smp" \
-      --samples 1 --light-samples 2048 --adaptive 0 -o "$B/ref08-$smp.pfm"
-    for n in 1 4 16 64 100 121 144 256; do
-      { [ "$n" = 100 ] || [ "$n" = 121 ] || [ "$n" = 144 ]; } && [ "$smp" != grid ] && continue
-      for a in 0 0.02; do
-        [ "$a" != 0 ] && [ "$n" -le 4 ] && continue
-        err_ours "$D/error-08.csv" 08-area-lights "$B/ref08-$smp.pfm" \
-          "$smp light-samples=$n adaptive=$a" --sampler "$smp" --samples 1 \
-          --light-samples "$n" --adaptive "$a"
+  # One camera sample, so that only the light's sampling differs from the
+  # reference: grid puts it at the pixel centre, Sobol at the pixel's first
+  # point (the same in the reference: same seed).
+  for smp in grid sobol; do
+    r08=$(ref_ours 08-area-lights --width $W --height $H --threads "$ALL" --samples 1 \
+          --sampler $smp --light-samples 4096 --adaptive 0)
+    for t in $TLIST; do
+      for n in 64 144 256 400; do
+        [ $smp = sobol ] && { [ "$n" = 144 ] || [ "$n" = 400 ]; } && continue
+        err_ours "$D/error-08.csv" 08-area-lights "$r08" "$smp light-samples=$n" "$t" \
+          --samples 1 --sampler $smp --light-samples "$n" --adaptive 0
       done
     done
   done
   if [ -n "$POV" ]; then
-    (cd "$B" && "$POV" -D +W320 +H240 +WT2 +FN16 File_Gamma=1.0 -A Declare=Step=8 \
-      Declare=AreaN=33 Declare=AreaAdaptive=0 +Oref08pov.png ../../bench/spheres.pov >/dev/null 2>&1)
-    for n in 2 3 5 9 17; do for ad in 0 1 2; do
-      [ "$ad" -gt 0 ] && [ "$n" -lt 5 ] && continue
-      err_pov "$D/error-08.csv" "$B/ref08pov.png" "area_light ${n}x$n adaptive $ad" -A \
-        Declare=Step=8 Declare=AreaN=$n Declare=AreaAdaptive=$ad
-    done; done
+    # POV-Ray's reference: the mean of two renders with a jittered 32 x 32
+    # area light (a random place in each of the 1024 cells: unbiased; its
+    # regular grids put samples on the light's edges with equal weights,
+    # biased by O(1/n)).
+    p08a=$(ref_pov +W$W +H$H +WT"$ALL" +FN16 File_Gamma=1.0 -A Declare=Step=8 Declare=AreaN=32 \
+           Declare=AreaAdaptive=-1 Declare=AreaJitter=1 Declare=Ref=1)
+    p08b=$(ref_pov +W$W +H$H +WT"$ALL" +FN16 File_Gamma=1.0 -A Declare=Step=8 Declare=AreaN=32 \
+           Declare=AreaAdaptive=-1 Declare=AreaJitter=1 Declare=Ref=2)
+    for t in $TLIST; do
+      for set in "9 -1 jitter" "17 -1 jitter" "24 -1 jitter" "17 2 -" "33 2 -"; do
+        read -r n ad jit <<<"$set"
+        label="area_light ${n}x$n$([ "$ad" = -1 ] || echo " adaptive $ad")$([ "$jit" = - ] || echo " jitter")"
+        err_pov "$D/error-08.csv" "$p08a $p08b" "$label" "$t" $(povargs08 "$label")
+      done
+    done
   fi
 fi
 
-# ---------------------------------------------------------------- scaling
+# ---------------------------------------------------------------- threads
+# The settings that reach RMSE 5e-4 soonest (trace time, 2 threads), and the
+# one-sample frame of step 05, at 1, 2 and all threads, both renderers.
+best() { # CSV RENDERER -> the setting with the least trace time at RMSE <= 5e-4,
+  # or the one with the lowest error when none got there
+  awk -F, -v r="$2" 'NR > 1 && $1 == r && $3 == 2 {
+      if ($6 <= 5e-4 && (b == "" || $4 < b)) {b = $4; s = $2}
+      if (m == "" || $6 < m) {m = $6; ms = $2}}
+    END {print (s != "" ? s : ms)}' "$1"
+}
+args07() { case "$1" in "sobol n="*) echo "--sampler sobol --samples ${1#sobol n=} --adaptive 0";;
+  "adaptive n="*) local x=${1#adaptive n=}; echo "--samples ${x% T=*} --adaptive ${x#* T=}";; esac; }
+args08() { echo "--samples 1 --sampler ${1% light-samples=*} --light-samples ${1#*light-samples=} --adaptive 0"; }
+log "threads: 1 $TLIST"
+echo "picture,renderer,setting,threads,trace_med,wall_med" > "$D/threads.csv"
+thread_row() { # PICTURE RENDERER SETTING THREADS -> one row
+  local pic=$1 who=$2 set=$3 t=$4 a b
+  # One run of a setting that took more than 5 s in the error sweep.
+  local ERUNS=$ERUNS slow
+  slow=$(awk -F, -v r="$who" -v s="$set" '$1 == r && $2 == s && $4 > 5 {print 1; exit}' \
+         "$D/error-${pic%% *}.csv" 2>/dev/null)
+  [ -n "$slow" ] && ERUNS=1
+  if [ "$who" = ours ]; then
+    case "$pic" in
+      05*) read -r a _ _ b _ _ _ < <(ours_n "$ERUNS" 05-shadows --scene scenes/spheres.scene \
+             --threads "$t" -o "$B/th.png");;
+      07*) read -r a _ _ b _ _ _ < <(ours_n "$ERUNS" 07-antialiasing --width $W --height $H \
+             --threads "$t" $(args07 "$set") -o "$B/th.png");;
+      08*) read -r a _ _ b _ _ _ < <(ours_n "$ERUNS" 08-area-lights --width $W --height $H \
+             --threads "$t" $(args08 "$set") -o "$B/th.png");;
+    esac
+  else
+    case "$pic" in
+      05*) read -r a _ _ b _ _ < <(pov_n "$ERUNS" +W$W +H$H +WT"$t" Declare=Step=5 +Oth.png);;
+      07*) read -r a _ _ b _ _ < <(pov_n "$ERUNS" +W$W +H$H +WT"$t" +FN16 File_Gamma=1.0 \
+             Declare=Step=7 ${set} +Oth.png);;
+      08*) read -r a _ _ b _ _ < <(pov_n "$ERUNS" +W$W +H$H +WT"$t" +FN16 File_Gamma=1.0 \
+             $(povargs08 "$set") +Oth.png);;
+    esac
+  fi
+  echo "$pic,$who,$set,$t,$a,$b" >> "$D/threads.csv"
+}
+b07o=$(best "$D/error-07.csv" ours 2>/dev/null); b08o=$(best "$D/error-08.csv" ours 2>/dev/null)
+b07p=$(best "$D/error-07.csv" povray 2>/dev/null); b08p=$(best "$D/error-08.csv" povray 2>/dev/null)
+for t in 1 $TLIST; do
+  thread_row "05 one sample" ours "1 sample" "$t"
+  [ -n "$b07o" ] && thread_row "07 best setting" ours "$b07o" "$t"
+  [ -n "$b08o" ] && thread_row "08 best setting" ours "$b08o" "$t"
+  [ -n "$POV" ] || continue
+  thread_row "05 one sample" povray "-A" "$t"
+  [ -n "$b07p" ] && thread_row "07 best setting" povray "$b07p" "$t"
+  [ -n "$b08p" ] && thread_row "08 best setting" povray "$b08p" "$t"
+done
+
+# ---------------------------------------------------------------- spheres
 if have 05-shadows; then
   log "scaling (step 05, 2 threads, 10 .. 10^6 spheres)"
-  echo "spheres,render_med,render_min,render_max,wall_med,wall_min,wall_max" > "$D/scaling.csv"
+  echo "spheres,trace_med,trace_min,trace_max,wall_med,wall_min,wall_max" > "$D/scaling.csv"
   for n in 10 100 1000 10000 100000 1000000; do
     [ -s "$B/spheres-$n.scene" ] || "$B/gen_spheres" "$n" > "$B/spheres-$n.scene"
     read -r rm rlo rhi wm wlo whi _ < <(ours_n 3 05-shadows --scene "$B/spheres-$n.scene" \
       --threads 2 -o "$B/s.pfm")
     echo "$n,$rm,$rlo,$rhi,$wm,$wlo,$whi" >> "$D/scaling.csv"
   done
-  log "layouts: plain loop, SIMD blocks, BVH (step 05, 2 threads)"
+  log "layouts: plain loop, one leaf, BVH (step 05, 2 threads)"
   echo "spheres,loop,flat,bvh" > "$D/layout.csv"
-  for n in 5 10 20 50 100 1000; do
+  for n in 5 20 100 1000; do
     sc="$B/spheres-$n.scene"; [ "$n" = 5 ] && sc=scenes/spheres.scene
     [ -s "$sc" ] || "$B/gen_spheres" "$n" > "$sc"
     row=$n
     for l in loop flat bvh; do
-      export RT_ACCEL=$l
-      row+=,$(ours_n "$RUNS" 05-shadows --scene "$sc" --threads 2 -o "$B/s.pfm" | cut -d' ' -f1)
+      row+=,$(RT_ACCEL=$l ours_n 3 05-shadows --scene "$sc" --threads 2 -o "$B/s.pfm" | cut -d' ' -f1)
     done
-    unset RT_ACCEL
     echo "$row" >> "$D/layout.csv"
   done
 fi
 
 t_total=$(awk -v a="$t_start" -v b="$EPOCHREALTIME" 'BEGIN {printf "%.0f", b - a}')
-bench/report.sh "$t_total" "$POV"
+bench/report.sh "$t_total" "$POV" "$ALL" "$load_start $(cut -d' ' -f1 /proc/loadavg)"

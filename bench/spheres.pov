@@ -1,7 +1,10 @@
 // POV-Ray 3.7 twin of the benchmark scenes (docs/benchmarks.md), written from
 // scenes/spheres.scene, antialiasing.scene and area-lights.scene. Declare=Step=
 // 5 (hard shadows, the canonical scene), 7 (ambient, point light: steps 06-07)
-// or 8 (area light); for 8, Declare=AreaN=n and Declare=AreaAdaptive=a.
+// or 8 (area light); for 8, Declare=AreaN=n and Declare=AreaAdaptive=a, where
+// a = -1 leaves out the `adaptive` keyword: then every one of the n x n
+// shadow rays is traced (POV-Ray's `adaptive 0` still subdivides from the
+// four corners, which misses occluders between them).
 // POV-Ray is left-handed: `right -x*...` mirrors it into the project's
 // right-handed world; `angle` is the horizontal field of view; lights fall off
 // as 1/r^2 only with fade_power 2; colours stay linear with assumed_gamma 1
@@ -60,7 +63,9 @@ sphere { <1.3, 0.45, 1.8>, 0.45 Mat(<0.85, 0.85, 0.85>, 0.3, 16) }
   // Parallelogram corner (-1, 3.3, -0.6), edges (2, 0, 0) and (0, 0.3, 1.2):
   // POV-Ray centres the area light on the light's position.
   light_source { <0, 3.45, 0> rgb <20, 19, 16.5> / 2 fade_distance 1 fade_power 2
-    area_light <2, 0, 0>, <0, 0.3, 1.2>, AreaN, AreaN adaptive AreaAdaptive }
+    area_light <2, 0, 0>, <0, 0.3, 1.2>, AreaN, AreaN
+    #if (AreaAdaptive >= 0) adaptive AreaAdaptive #end
+    #ifdef (AreaJitter) jitter #end }
   #declare E = 0.15;
 #end
 // Directional light, direction (-1, -2, -1), irradiance E.

@@ -136,34 +136,51 @@ static float fraction(uint32_t x)
   return (float)(x >> 8) * 0x1p-24f;
 }
 
-vec2s sampler_get(SamplerKind kind, uint32_t seed, uint32_t pixel, uint32_t index,
-                  uint32_t first, uint32_t count)
+SamplerPattern sampler_pattern(SamplerKind kind, uint32_t seed, uint32_t pixel,
+                               uint32_t count)
 {
-  vec2s s = {.x = 0.5f, .y = 0.5f};
-  Rng r = sample_rng(seed, pixel, index);
-  switch (kind) {
-  case SAMPLER_GRID:
-    return grid_point(index - first, count);
-  case SAMPLER_RANDOM:
-    s.x = rng_float(&r);
-    s.y = rng_float(&r);
-    return s;
-  case SAMPLER_JITTER: {
-    float u = rng_float(&r);
-    return cell_point(index - first, count, u, rng_float(&r));
-  }
-  case SAMPLER_SOBOL: {
+  SamplerPattern p = {.kind = kind, .seed = seed, .pixel = pixel, .count = count};
+  if (kind == SAMPLER_SOBOL) {
     /* One pair of scramble seeds per pixel: the stream of sample 2^32 - 1,
      * an index no pixel reaches (at most SCENE_MAX_SAMPLES samples). */
     Rng px = sample_rng(seed, pixel, UINT32_MAX);
-    uint32_t sx = rng_next(&px), sy = rng_next(&px);
-    s.x = fraction(owen_scramble(reverse_bits(index), sx));
-    s.y = fraction(owen_scramble(sobol_dim2(index), sy));
+    p.scramble[0] = rng_next(&px);
+    p.scramble[1] = rng_next(&px);
+  }
+  return p;
+}
+
+vec2s sampler_point(const SamplerPattern *p, uint32_t index)
+{
+  vec2s s = {.x = 0.5f, .y = 0.5f};
+  switch (p->kind) {
+  case SAMPLER_GRID:
+    return grid_point(index, p->count);
+  case SAMPLER_RANDOM: {
+    Rng r = sample_rng(p->seed, p->pixel, index);
+    s.x = rng_float(&r);
+    s.y = rng_float(&r);
     return s;
   }
+  case SAMPLER_JITTER: {
+    Rng r = sample_rng(p->seed, p->pixel, index);
+    float u = rng_float(&r);
+    return cell_point(index, p->count, u, rng_float(&r));
+  }
+  case SAMPLER_SOBOL:
+    s.x = fraction(owen_scramble(reverse_bits(index), p->scramble[0]));
+    s.y = fraction(owen_scramble(sobol_dim2(index), p->scramble[1]));
+    return s;
   case SAMPLER_CENTER:
   case SAMPLER_COUNT:
     break;
   }
   return s;
+}
+
+vec2s sampler_get(SamplerKind kind, uint32_t seed, uint32_t pixel, uint32_t index,
+                  uint32_t count)
+{
+  SamplerPattern p = sampler_pattern(kind, seed, pixel, count);
+  return sampler_point(&p, index);
 }

@@ -23,17 +23,31 @@ bool sampler_parse(const char *name, SamplerKind *out);
 /* The name of a sampler kind. */
 const char *sampler_name(SamplerKind kind);
 
-/* Sample `index` of pixel `pixel` (j * width + i) for `seed`: a point of
- * [0,1)^2 inside the pixel, (0,0) its bottom-left corner. The samples
- * [first, first + count) of a pixel form one pattern: grid and jitter spread
- * them over `count` cells of equal area 1/count (a k x k grid when count is a
- * square; otherwise r = floor(sqrt(count)) rows, row q holding
+/* The samples 0 .. count - 1 of one pixel (j * width + i) for one seed: what
+ * sampler_point needs, computed once (the Sobol scramble of the pixel). */
+typedef struct SamplerPattern {
+  SamplerKind kind;
+  uint32_t seed, pixel, count;
+  uint32_t scramble[2]; /* Sobol: the pixel's scramble seeds, x and y */
+} SamplerPattern;
+
+/* The pattern of `count` samples of pixel `pixel` for `seed`. */
+SamplerPattern sampler_pattern(SamplerKind kind, uint32_t seed, uint32_t pixel,
+                               uint32_t count);
+
+/* Sample `index` of the pattern: a point of [0,1)^2 inside the pixel, (0,0)
+ * its bottom-left corner. Grid and jitter spread the `count` samples over
+ * `count` cells of equal area 1/count (a k x k grid when count is a square;
+ * otherwise r = floor(sqrt(count)) rows, row q holding
  * floor((q+1) count/r) - floor(q count/r) cells and as tall as that count
- * over `count`). Sobol and random ignore `first` and `count`: any run of
- * samples from 0 is already spread over the pixel (the Sobol points 0..2^m-1
- * hold one point in every elementary box of area 2^-m). Random numbers come
- * from rng_make(seed, pixel, index) only. Requires index - first < count. */
+ * over `count`). Sobol and random ignore `count`: any run of samples from 0
+ * is already spread over the pixel (the Sobol points 0..2^m-1 hold one point
+ * in every elementary box of area 2^-m). Random numbers come from
+ * rng_make(seed, pixel, index) only. Requires index < count. */
+vec2s sampler_point(const SamplerPattern *pattern, uint32_t index);
+
+/* sampler_point(&sampler_pattern(kind, seed, pixel, count), index). */
 vec2s sampler_get(SamplerKind kind, uint32_t seed, uint32_t pixel, uint32_t index,
-                  uint32_t first, uint32_t count);
+                  uint32_t count);
 
 #endif

@@ -38,7 +38,10 @@ enum SceneFeature {
 
 /* What scene_prepare found the scene needs, so renderers skip the rest. */
 typedef struct SceneInfo {
+  bool specular;       /* some material has a non-zero specular colour */
   bool ambient;        /* ambient light times some ambient colour is non-zero */
+  int n_point, n_directional, n_area; /* lights kept */
+  int n_spheres, n_planes;            /* lit shapes */
   unsigned ignored;    /* SceneFeature bits present in the scene but not rendered */
 } SceneInfo;
 
@@ -115,7 +118,7 @@ bool scene_occluded(const Scene *scene, Ray r, float tmax);
 
 /* A copy of `scene` whose any-hit queries answer false (no_occluders set):
  * what a shading point sees when the renderer has proved that nothing lies
- * between it and a light (accel_quad_unoccluded, common/accel/accel.h). */
+ * between it and a light (accel_shadow_view, common/accel/accel.h). */
 Scene scene_view_unoccluded(const Scene *scene);
 
 /* The index of the material called `name`, or -1. */

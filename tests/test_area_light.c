@@ -1,19 +1,22 @@
-/* Unit tests of step 08's area lights (shade_area, shade_trace): the estimate
- * against Lambert's closed-form polygon irradiance (bias checked over many
- * seeds), a tiny light against a point light, one-sidedness, the
- * shadow-volume skip against the full estimate, and the radiance the camera
- * sees.
- * docs/08-area-lights.md. */
-#include <criterion/criterion.h>
+/* Unit tests of step 08's area lights (shade_area, shade_phong, shade_trace):
+ * the estimate against Lambert's closed-form polygon irradiance (bias checked
+ * over many seeds, with and without the shadow-volume skip), the shadow views
+ * against the whole scene, a tiny light
+ * against a point light, one-sidedness, light patterns keyed by pixel and
+ * camera sample (also through the step's binary), and the radiance the camera
+ * sees. docs/08-area-lights.md. */
+#include "check.h"
 
-#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <sys/stat.h>
 
 #include "accel/accel.h"
+#include "app/image.h"
 #include "app/parser.h"
 #include "rng.h"
 #include "sampler.h"
 #include "shade.h"
-
 enum { ALL_FEATURES = SCENE_CAMERA | SCENE_LIGHTS | SCENE_AMBIENT | SCENE_LIGHT_SHAPES |
                       SCENE_SAMPLES | SCENE_AREA_LIGHTS };
 
@@ -26,8 +29,8 @@ static void load(Scene *s, const char *lights)
            "material white diffuse 1 1 1\n"
            "plane point 0 0 0 normal 0 1 0 material white\n%s\n", lights);
   scene_init(s);
-  cr_assert(parser_load_string("test", text, s));
-  cr_assert(scene_prepare(s, ALL_FEATURES));
+  cr_assert(parser_load_string("test", text, s) && scene_prepare(s, ALL_FEATURES),
+            "cannot load the test scene:\n%s", text);
 }
 
 /* The floor's hit at (x, 0, z), normal up. */
@@ -38,17 +41,38 @@ static Hit floor_hit(const Scene *s, float x, float z)
   return h;
 }
 
-/* The red channel of Phong at `h` for seed, light samples, pattern, adaptive. */
+#define DOC_LIGHT "docs/08-area-lights.md, \"The estimate: N point lights\""
+#define DOC_KEYS "docs/08-area-lights.md, \"Where the samples go\""
+#define DOC_SKIP "docs/08-area-lights.md, \"Points nothing can shadow\""
+
+/* The eye the tests shade toward. */
+static const vec3s EYE = {.x = 0.0f, .y = 1.0f, .z = 5.0f};
+
+/* The red channel of shade_phong at `h` (with the shadow-volume skip) for
+ * seed, light samples and pattern; pixel 7, camera sample 0. */
 static double estimate(const Scene *s, const Hit *h, uint32_t seed, int n, int kind,
-                       float adaptive, uint64_t *rays)
+                       uint64_t *rays)
 {
-  RenderSettings set = {.seed = seed, .samples = 1, .light_samples = n,
-                        .sampler = kind, .adaptive = adaptive};
+  RenderSettings set = {.seed = seed, .samples = 1, .light_samples = n, .sampler = kind};
   RenderCtx ctx = {.set = &set, .pixel = 7, .sample = 0};
-  vec3s c = shade_phong(s, h, vec_make(0.0f, 1.0f, 5.0f), &ctx);
+  vec3s c = shade_phong(s, h, EYE, &ctx);
   if (rays)
     *rays = ctx.rays;
   return c.x;
+}
+
+/* The red channel of shade_area(light 0, n samples) itself: every shadow ray
+ * traced, for pixel `pixel` and camera sample `sample`. */
+static double area(const Scene *s, const Hit *h, uint32_t seed, int n, int kind,
+                   uint32_t pixel, uint32_t sample, uint64_t *rays)
+{
+  RenderSettings set = {.seed = seed, .samples = 1, .light_samples = n, .sampler = kind};
+  RenderCtx ctx = {.set = &set, .pixel = pixel, .sample = sample};
+  vec3s v = glms_vec3_normalize(glms_vec3_sub(EYE, h->p));
+  double e = shade_area(s, 0, h, v, n, &ctx).x;
+  if (rays)
+    *rays = ctx.rays;
+  return e;
 }
 
 /* Lambert's formula in long double: irradiance at p (normal n) from a polygon
@@ -92,6 +116,7 @@ static long double quad_vertices(const long double c[3], const long double e1[3]
   return sqrtl(x * x + y * y + z * z);
 }
 
+
 Test(area_light, lambert_reference_gives_pi_L_under_a_huge_light)
 {
   /* A 2e4 x 2e4 square 1 above p fills the hemisphere: E -> pi L (the check
@@ -99,17 +124,20 @@ Test(area_light, lambert_reference_gives_pi_L_under_a_huge_light)
   long double c[3] = {-1e4L, 1.0L, -1e4L}, e1[3] = {2e4L, 0, 0}, e2[3] = {0, 0, 2e4L};
   long double v[4][3], p[3] = {0, 0, 0}, n[3] = {0, 1, 0};
   quad_vertices(c, e1, e2, v);
-  long double e = lambert(v, p, n, 1.0L);
-  cr_expect(fabsl(e - 3.14159265358979323846L) < 1e-3L, "E = %.9Lf, expected pi", e);
+  Check k = CHECK("lambert (the test's own reference)", DOC_LIGHT);
+  CHECK_NEAR(&k, 3.14159265358979323846, (double)lambert(v, p, n, 1.0L), 1e-3,
+             "irradiance under a square light filling the sky, radiance 1 (pi)");
 }
 
-/* Mean and standard error of the estimate over `seeds` seeds. */
-static void seed_stats(const Scene *s, const Hit *h, int n, int kind, int seeds,
+/* Mean and standard error over `seeds` seeds of shade_phong (skip = true: the
+ * shadow-volume skip may apply) or of shade_area with every ray traced. */
+static void seed_stats(const Scene *s, const Hit *h, int n, int kind, int seeds, bool skip,
                        double *mean, double *se)
 {
   double sum = 0.0, sum2 = 0.0;
   for (int k = 0; k < seeds; k++) {
-    double e = estimate(s, h, 1000u + (uint32_t)k, n, kind, 0.0f, NULL);
+    uint32_t seed = 1000u + (uint32_t)k;
+    double e = skip ? estimate(s, h, seed, n, kind, NULL) : area(s, h, seed, n, kind, 7, 0, NULL);
     sum += e;
     sum2 += e * e;
   }
@@ -118,6 +146,11 @@ static void seed_stats(const Scene *s, const Hit *h, int n, int kind, int seeds,
   *se = sqrt(fmax(var, 0.0) / seeds);
 }
 
+/* Every pattern that claims to be unbiased (random, jitter, Sobol), with all
+ * shadow rays traced (shade_area, 16 samples) and through shade_phong, whose
+ * shadow-volume skip shades these unshadowed points without a ray (64
+ * samples): the mean over 64 seeds lies within 4 standard errors (plus float
+ * rounding of the sum) of Lambert's closed form. */
 Test(area_light, unoccluded_estimate_is_unbiased_against_lambert_formula)
 {
   /* A tilted 2 x 1 light (facing down and toward +z), power 6: L = 6 / A. */
@@ -128,18 +161,24 @@ Test(area_light, unoccluded_estimate_is_unbiased_against_lambert_formula)
   long double L = 6.0L / quad_vertices(c, e1, e2, v);
   const float pts[3][2] = {{0.0f, 0.0f}, {1.5f, 0.7f}, {-2.5f, -1.25f}};
   const int kinds[3] = {SAMPLER_JITTER, SAMPLER_RANDOM, SAMPLER_SOBOL};
+  Check k = CHECK("shade_area", DOC_LIGHT);
   for (int q = 0; q < 3; q++)
-    for (int kk = 0; kk < 3; kk++) {
-      Hit h = floor_hit(&s, pts[q][0], pts[q][1]);
-      long double p[3] = {pts[q][0], 0, pts[q][1]};
-      double ref = (double)lambert(v, p, n, L), mean, se;
-      seed_stats(&s, &h, 16, kinds[kk], 64, &mean, &se);
-      /* 4 standard errors, plus float rounding of a 16-term sum. */
-      cr_expect(fabs(mean - ref) <= 4.0 * se + 1e-5 * ref,
-                "%s at (%g, %g): mean %.7f over 64 seeds, Lambert %.7f, se %.2g",
-                sampler_name(kinds[kk]), pts[q][0], pts[q][1], mean, ref, se);
-      cr_expect(se > 0.0, "the seeds must change the samples");
-    }
+    for (int kk = 0; kk < 3; kk++)
+      for (int skip = 0; skip < 2; skip++) {
+        Hit h = floor_hit(&s, pts[q][0], pts[q][1]);
+        long double p[3] = {pts[q][0], 0, pts[q][1]};
+        double ref = (double)lambert(v, p, n, L), mean, se;
+        int samples = skip ? 64 : 16;
+        seed_stats(&s, &h, samples, kinds[kk], 64, skip, &mean, &se);
+        const char *how = skip ? "shade_phong (the skip)" : "shade_area";
+        CHECK_NEAR(&k, ref, mean, 4.0 * se + 1e-5 * ref, "%s, %s, %d light samples, floor "
+                   "point (%g, 0, %g) under a tilted light: mean over 64 seeds of the red "
+                   "irradiance against Lambert's formula (4 standard errors)", how,
+                   sampler_name(kinds[kk]), samples, pts[q][0], pts[q][1]);
+        CHECK_THAT(&k, se > 0.0, "%s, %s: the estimate is the same for 64 seeds: the light "
+                   "pattern must follow --seed", how, sampler_name(kinds[kk]));
+      }
+  CHECK_DONE(&k);
   scene_free(&s);
 }
 
@@ -150,9 +189,11 @@ Test(area_light, stratified_samples_vary_far_less_than_independent_ones)
   load(&s, "light area corner -1 3 -0.5 edge1 2 0 0 edge2 0 0 1 power 6 6 6");
   Hit h = floor_hit(&s, 0.8f, 0.3f);
   double m_j, se_j, m_r, se_r;
-  seed_stats(&s, &h, 64, SAMPLER_JITTER, 64, &m_j, &se_j);
-  seed_stats(&s, &h, 64, SAMPLER_RANDOM, 64, &m_r, &se_r);
-  cr_expect(se_j < 0.25 * se_r, "jitter se %.3g, random se %.3g", se_j, se_r);
+  seed_stats(&s, &h, 64, SAMPLER_JITTER, 64, false, &m_j, &se_j);
+  seed_stats(&s, &h, 64, SAMPLER_RANDOM, 64, false, &m_r, &se_r);
+  Check k = CHECK("shade_area", DOC_KEYS);
+  CHECK_THAT(&k, se_j < 0.25 * se_r, "64 light samples: jitter's standard error %.3g must be "
+             "under a quarter of random's %.3g (one sample per stratum)", se_j, se_r);
   scene_free(&s);
 }
 
@@ -166,8 +207,10 @@ Test(area_light, regular_grid_converges_to_lambert_formula)
   long double L = 6.0L / quad_vertices(c, e1, e2, v);
   double ref = (double)lambert(v, p, n, L);
   Hit h = floor_hit(&s, 0.5f, -0.2f);
-  double e = estimate(&s, &h, 1, 1024, SAMPLER_GRID, 0.0f, NULL);
-  cr_expect(fabs(e - ref) < 1e-4 * ref, "grid 32 x 32: %.8f, Lambert %.8f", e, ref);
+  Check k = CHECK("shade_area", DOC_LIGHT);
+  CHECK_REL(&k, ref, area(&s, &h, 1, 1024, SAMPLER_GRID, 7, 0, NULL), 1e-4,
+            "grid 32 x 32 at floor point (0.5, 0, -0.2): red irradiance against Lambert's "
+            "formula");
   scene_free(&s);
 }
 
@@ -181,23 +224,27 @@ Test(area_light, tiny_light_is_a_point_light_with_cos_theta_light)
   load(&s, "light area corner 0.2995 2 -0.4005 edge1 0.001 0 0 edge2 0 0 0.001 "
            "power 5 5 5");
   const float pts[3][2] = {{0.3f, -0.4f}, {1.5f, 0.5f}, {-2.0f, 1.0f}};
+  Check k = CHECK("shade_area", DOC_LIGHT);
   for (int q = 0; q < 3; q++) {
     long double d[3] = {0.3L - pts[q][0], 2.0L, -0.4L - pts[q][1]};
     long double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
     long double cos_t = d[1] / sqrtl(r2); /* both cosines: light faces -y, floor +y */
     double ref = (double)(5.0L * cos_t * cos_t / r2);
     Hit h = floor_hit(&s, pts[q][0], pts[q][1]);
-    double e = estimate(&s, &h, 3, 16, SAMPLER_JITTER, 0.0f, NULL);
-    cr_expect(fabs(e - ref) < 1e-3 * ref, "at (%g, %g): %.7f, expected %.7f",
-              pts[q][0], pts[q][1], e, ref);
+    double e = area(&s, &h, 3, 16, SAMPLER_JITTER, 7, 0, NULL);
+    CHECK_REL(&k, ref, e, 1e-3, "a 1 mm light, power 5, 2 above the floor, at floor point "
+              "(%g, 0, %g): red, against P cos(theta_light) cos(theta_p) / r^2", pts[q][0],
+              pts[q][1]);
     char light[128];
     snprintf(light, sizeof light, "light point position 0.3 2 -0.4 power %.9f %.9f %.9f",
              (double)(5.0L * cos_t), (double)(5.0L * cos_t), (double)(5.0L * cos_t));
     load(&pt, light);
-    double e_pt = estimate(&pt, &h, 3, 1, SAMPLER_JITTER, 0.0f, NULL);
-    cr_expect(fabs(e - e_pt) < 1e-3 * e_pt, "tiny area %.7f, point light %.7f", e, e_pt);
+    CHECK_REL(&k, estimate(&pt, &h, 3, 1, SAMPLER_JITTER, NULL), e, 1e-3,
+              "the same point: the 1 mm area light against a point light of power "
+              "P cos(theta_light) there");
     scene_free(&pt);
   }
+  CHECK_DONE(&k);
   scene_free(&s);
 }
 
@@ -212,40 +259,54 @@ Test(area_light, point_behind_the_light_gets_nothing)
            .p_err = 1e-6f, .inst = &s.instances[1]};
   cr_assert(s.instances[1].shape == SHAPE_PLANE);
   uint64_t rays;
-  double e = estimate(&s, &h, 1, 16, SAMPLER_JITTER, 0.0f, &rays);
-  cr_expect(e == 0.0 && rays == 0, "behind the light: %g with %llu rays", e,
-            (unsigned long long)rays);
+  Check k = CHECK("shade_area", DOC_LIGHT);
+  CHECK_NEAR(&k, 0.0, area(&s, &h, 1, 16, SAMPLER_JITTER, 7, 0, &rays), 0.0,
+             "a ceiling point behind a one-sided light (it faces down, away): red");
+  CHECK_INT(&k, 0, rays, "the same point: shadow rays traced (a sample that adds nothing "
+            "needs none)");
   /* The floor below, in front of the light, does receive light. */
   Hit f = floor_hit(&s, 0.2f, 0.1f);
-  cr_expect(estimate(&s, &f, 1, 16, SAMPLER_JITTER, 0.0f, NULL) > 0.1);
+  double lit = area(&s, &f, 1, 16, SAMPLER_JITTER, 7, 0, NULL);
+  CHECK_THAT(&k, lit > 0.1, "the floor point under the same light: red %g, expected more "
+             "than 0.1", lit);
   scene_free(&s);
 }
 
-Test(area_light, shadow_volume_skip_equals_the_full_estimate_when_nothing_is_in_the_way)
+Test(area_light, shadow_volume_skip_equals_the_same_estimate_without_rays)
 {
   /* Nothing between the floor and the light: shade_phong shades the samples
-   * in a view of the scene with no occluders (no shadow ray at all), and must
-   * give exactly what shade_area gives with every shadow ray traced. */
+   * in a view of the scene with no occluders (no shadow ray at all), the grid
+   * with a quarter of its samples but at least 16 (16 of 16, 16 of 64, 64 of
+   * 256), the other patterns with all, and must give exactly what shade_area
+   * gives for that many samples with every shadow ray traced. */
   Scene s;
   load(&s, "light area corner -1 3 -0.5 edge1 2 0 0 edge2 0 0.4 1 power 6 6 6");
   Hit h = floor_hit(&s, 0.4f, -0.3f);
-  for (int kind = SAMPLER_GRID; kind < SAMPLER_COUNT; kind++) {
-    uint64_t rays;
-    double skipped = estimate(&s, &h, 9, 16, kind, 0.0f, &rays);
-    RenderSettings set = {.seed = 9, .samples = 1, .light_samples = 16, .sampler = kind};
-    RenderCtx ctx = {.set = &set, .pixel = 7, .sample = 0};
-    vec3s v = glms_vec3_normalize(glms_vec3_sub(vec_make(0.0f, 1.0f, 5.0f), h.p));
-    double traced = shade_area(&s, 0, &h, v, &ctx).x;
-    cr_expect(skipped == traced, "%s: skipped %.9g, traced %.9g", sampler_name(kind),
-              skipped, traced);
-    cr_expect(rays == 0 && ctx.rays == 16, "%s: rays %llu with the skip, %llu without",
-              sampler_name(kind), (unsigned long long)rays, (unsigned long long)ctx.rays);
-  }
+  const int budget[3] = {16, 64, 256}, grid_used[3] = {16, 16, 64};
+  Check k = CHECK("shade_phong's shadow-volume skip", DOC_SKIP);
+  for (int kind = SAMPLER_GRID; kind < SAMPLER_COUNT; kind++)
+    for (int b = 0; b < 3; b++) {
+      int used[3] = {budget[0], budget[1], budget[2]};
+      if (kind == SAMPLER_GRID)
+        memcpy(used, grid_used, sizeof used);
+      uint64_t rays, traced_rays;
+      double skipped = estimate(&s, &h, 9, budget[b], kind, &rays);
+      double traced = area(&s, &h, 9, used[b], kind, 7, 0, &traced_rays);
+      CHECK_NEAR(&k, traced, skipped, 0.0, "%s, %d light samples, a floor point nothing "
+                 "shadows: red with the skip against shade_area with %d samples, every ray "
+                 "traced", sampler_name((SamplerKind)kind), budget[b], used[b]);
+      CHECK_INT(&k, 0, rays, "%s, %d light samples, the same point: shadow rays traced with "
+                "the skip", sampler_name((SamplerKind)kind), budget[b]);
+      CHECK_INT(&k, used[b], traced_rays, "%s, shade_area with %d samples, the same point: "
+                "shadow rays", sampler_name((SamplerKind)kind), used[b]);
+    }
+  CHECK_DONE(&k);
   scene_free(&s);
 }
 
-/* A random ray from the spawned origin of h to a point of the light. */
-static bool random_ray_occluded(const Scene *s, const Hit *h, const Quad *q, Rng *r)
+/* A random shadow ray from the spawned origin of h to a point of the light
+ * (its front side only); false when the point is behind h. */
+static bool random_shadow_ray(const Hit *h, const Quad *q, Rng *r, Ray *ray, float *tmax)
 {
   vec3s x = quad_point(q, rng_float(r), rng_float(r));
   vec3s to_x = glms_vec3_sub(x, h->p);
@@ -253,22 +314,27 @@ static bool random_ray_occluded(const Scene *s, const Hit *h, const Quad *q, Rng
   vec3s l = glms_vec3_scale(to_x, 1.0f / dist);
   if (!(glms_vec3_dot(h->n, l) > 0.0f))
     return false;
-  return scene_occluded(s, ray_spawn(h, l), ray_shadow_tmax(dist));
+  *ray = ray_spawn(h, l);
+  *tmax = ray_shadow_tmax(dist);
+  return true;
 }
 
-Test(area_light, shadow_volume_test_never_skips_a_ray_that_is_blocked)
+Test(area_light, shadow_views_answer_every_shadow_ray_as_the_scene_does)
 {
   /* Random spheres over the floor; shading points on the floor and on the
-   * spheres. Whenever accel_quad_unoccluded says no shadow ray is needed, 64
-   * random shadow rays (scene_occluded, the ray code itself) must all pass.
-   * It must also say so often enough to matter, and sometimes not. */
+   * spheres. accel_shadow_view gives a view whose shadow queries test only
+   * the shapes that may stand in the way (none: no ray at all). For 64
+   * random shadow rays per point, scene_occluded on the view must answer as
+   * on the whole scene (the ray code itself). Each kind of view must occur
+   * often enough to matter. */
   Rng r = rng_make(7, 0, 0);
-  int skipped = 0, kept = 0;
+  int counts[3] = {0, 0, 0}; /* views with no shape, some shapes, the whole scene */
+  Check k = CHECK("accel_shadow_view, accel_quad_unoccluded", DOC_SKIP);
   for (int scene_k = 0; scene_k < 20; scene_k++) {
     char text[1024];
     int len = snprintf(text, sizeof text,
                        "light area corner -1 3 -0.5 edge1 2 0 0 edge2 0 0.4 1 power 6 6 6\n");
-    for (int k = 0; k < 4; k++)
+    for (int q = 0; q < 4; q++)
       len += snprintf(text + len, sizeof text - (size_t)len,
                       "sphere center %g %g %g radius %g material white\n",
                       6.0f * rng_float(&r) - 3.0f, 2.5f * rng_float(&r),
@@ -278,24 +344,37 @@ Test(area_light, shadow_volume_test_never_skips_a_ray_that_is_blocked)
     if (scene_k % 2) /* half through the hierarchy's boxes, half the plain loop */
       cr_assert(accel_build(&s));
     const Quad *q = &s.lights[0].quad;
-    for (int k = 0; k < 200; k++) {
+    for (int p = 0; p < 200; p++) {
       Hit h;
       Ray cam = {.o = vec_make(6.0f * rng_float(&r) - 3.0f, 5.0f, 6.0f * rng_float(&r) - 3.0f),
                  .d = glms_vec3_normalize(vec_make(rng_float(&r) - 0.5f, -1.0f,
                                                    rng_float(&r) - 0.5f))};
       if (!scene_intersect(&s, cam, INFINITY, &h) || h.inst->light >= 0)
         continue;
-      if (!accel_quad_unoccluded(&s, &h, q)) {
-        kept++;
-        continue;
+      AccelShadowView storage;
+      Scene view;
+      int n = accel_shadow_view(&s, &h, q, &storage, &view);
+      counts[n == 0 ? 0 : n > 0 ? 1 : 2]++;
+      CHECK_INT(&k, n == 0, accel_quad_unoccluded(&s, &h, q), "random scene %d, point (%g, %g, "
+                "%g): accel_quad_unoccluded against a view with no shape", scene_k, h.p.x,
+                h.p.y, h.p.z);
+      int differ = 0;
+      for (int j = 0; j < 64; j++) {
+        Ray ray;
+        float tmax;
+        if (random_shadow_ray(&h, q, &r, &ray, &tmax))
+          differ += scene_occluded(&view, ray, tmax) != scene_occluded(&s, ray, tmax);
       }
-      skipped++;
-      for (int j = 0; j < 64; j++)
-        cr_assert(!random_ray_occluded(&s, &h, q, &r), "a skipped shadow ray is blocked");
+      CHECK_INT(&k, 0, differ, "random scene %d, point (%g, %g, %g), a view testing %d shapes: "
+                "shadow rays of 64 answered otherwise than on the scene", scene_k, h.p.x, h.p.y,
+                h.p.z, n);
     }
     scene_free(&s);
   }
-  cr_expect(skipped > 100 && kept > 100, "skipped %d, traced %d", skipped, kept);
+  CHECK_DONE(&k);
+  CHECK_THAT(&k, counts[0] > 100 && counts[1] > 100, "views with no shape %d, with some %d, "
+             "the whole scene %d: expected more than 100 of the first two (the test must "
+             "matter)", counts[0], counts[1], counts[2]);
 }
 
 Test(area_light, a_hidden_light_adds_nothing)
@@ -306,9 +385,10 @@ Test(area_light, a_hidden_light_adds_nothing)
            "plane point 0 1.5 0 normal 0 -1 0 material white");
   Hit h = floor_hit(&s, 0.4f, -0.3f);
   uint64_t rays;
-  double full = estimate(&s, &h, 9, 16, SAMPLER_JITTER, 0.0f, &rays);
-  cr_expect(full == 0.0, "E = %g, expected 0", full);
-  cr_expect(rays == 16, "rays %llu, expected 16", (unsigned long long)rays);
+  Check k = CHECK("shade_area", DOC_LIGHT);
+  CHECK_NEAR(&k, 0.0, estimate(&s, &h, 9, 16, SAMPLER_JITTER, &rays), 0.0,
+             "a floor point under a ceiling that hides the light: red");
+  CHECK_INT(&k, 16, rays, "the same point, 16 light samples: shadow rays (one each)");
   scene_free(&s);
 }
 
@@ -322,11 +402,87 @@ Test(area_light, a_half_hidden_light_gives_a_penumbra)
            "sphere center -0.5 1.5 0 radius 0.5 material white");
   load(&open, "light area corner -1 3 -0.5 edge1 2 0 0 edge2 0 0 1 power 6 6 6");
   Hit h = floor_hit(&s, 0.0f, 0.0f), ho = floor_hit(&open, 0.0f, 0.0f);
-  double part = estimate(&s, &h, 5, 16, SAMPLER_JITTER, 0.0f, NULL);
-  double lit = estimate(&open, &ho, 5, 16, SAMPLER_JITTER, 0.0f, NULL);
-  cr_expect(part > 0.05 * lit && part < 0.95 * lit, "penumbra %g of %g", part, lit);
+  double part = area(&s, &h, 5, 16, SAMPLER_JITTER, 7, 0, NULL);
+  double lit = area(&open, &ho, 5, 16, SAMPLER_JITTER, 7, 0, NULL);
+  Check k = CHECK("shade_area", DOC_LIGHT);
+  CHECK_THAT(&k, part > 0.05 * lit && part < 0.95 * lit, "a floor point whose light a sphere "
+             "half hides: red %g, expected between 5%% and 95%% of the unshadowed %g", part, lit);
   scene_free(&s);
   scene_free(&open);
+}
+
+/* The light pattern of one pixel and camera sample: shade_area with one
+ * random light sample at an unshadowed point, where the red value moves with
+ * the sample's place on the light. */
+Test(area_light, light_samples_are_keyed_by_pixel_and_camera_sample)
+{
+  Scene s;
+  load(&s, "light area corner -1 3 -0.5 edge1 2 0 0 edge2 0 0.4 1 power 6 6 6");
+  Hit h = floor_hit(&s, 0.4f, -0.3f);
+  Check k = CHECK("shade_area (light_pattern)", DOC_KEYS);
+  for (int kind = SAMPLER_RANDOM; kind < SAMPLER_COUNT; kind++) {
+    double first = area(&s, &h, 9, 1, kind, 7, 0, NULL);
+    int same_sample = 0, same_pixel = 0;
+    for (uint32_t q = 1; q < 16; q++) {
+      same_sample += area(&s, &h, 9, 1, kind, 7, q, NULL) == first;
+      same_pixel += area(&s, &h, 9, 1, kind, 7 + q, 0, NULL) == first;
+    }
+    CHECK_INT(&k, 0, same_sample, "%s, 1 light sample, pixel 7: camera samples 1..15 that put "
+              "their light sample where camera sample 0 does (each camera sample needs its own "
+              "pattern: key it by ctx->sample)", sampler_name((SamplerKind)kind));
+    CHECK_INT(&k, 0, same_pixel, "%s, 1 light sample, camera sample 0: pixels 8..22 that put "
+              "their light sample where pixel 7 does (key it by ctx->pixel)",
+              sampler_name((SamplerKind)kind));
+  }
+  CHECK_DONE(&k);
+  scene_free(&s);
+}
+
+/* Through the step's binary: a 1 x 1 film, 1 degree wide, looking straight
+ * down at the floor point under a light that a sphere half hides (the scene
+ * of a_half_hidden_light_gives_a_penumbra, the camera above the floor at
+ * y = 1, below the sphere). With 64 camera samples and 1 light sample each,
+ * the pixel averages 64 light samples, between 10% and 90% of the unshadowed
+ * value, when each camera sample has its own (ctx->sample set by step 07's
+ * pixel function); one shared light sample makes it all or nothing. */
+Test(area_light, each_camera_sample_takes_its_own_light_samples)
+{
+  const char *base = "film 1 1\n"
+                     "camera eye 0 1 0 center 0 0 0 up 0 0 -1 fov 1\n"
+                     "material white diffuse 1 1 1\n"
+                     "plane point 0 0 0 normal 0 1 0 material white\n"
+                     "light area corner -1 3 -0.5 edge1 2 0 0 edge2 0 0 1 power 6 6 6\n";
+  char text[2][512], path[2][256], out[256], cmd[1024];
+  snprintf(text[0], sizeof text[0], "%s", base);
+  snprintf(text[1], sizeof text[1], "%ssphere center -0.5 1.5 0 radius 0.5 material white\n",
+           base);
+  mkdir(BUILD_DIR "/test-out", 0755);
+  double red[2][3];
+  for (int v = 0; v < 2; v++) {
+    snprintf(path[v], sizeof path[v], BUILD_DIR "/test-out/keys-%d.scene", v);
+    FILE *f = fopen(path[v], "w");
+    cr_assert(f && fputs(text[v], f) >= 0 && fclose(f) == 0, "cannot write %s", path[v]);
+    for (int seed = 1; seed <= 3; seed++) {
+      snprintf(out, sizeof out, BUILD_DIR "/test-out/keys-%d-%d.pfm", v, seed);
+      snprintf(cmd, sizeof cmd, BUILD_DIR "/bin/" STEP_NAME " --scene %s --samples 64 "
+               "--light-samples 1 --sampler random --adaptive 0 --seed %d --quiet -o %s",
+               path[v], seed, out);
+      cr_assert(system(cmd) == 0, "'%s' failed", cmd);
+      int w, h;
+      float *rgb;
+      cr_assert(image_load(out, &w, &h, &rgb), "cannot read %s", out);
+      red[v][seed - 1] = rgb[0];
+      free(rgb);
+    }
+  }
+  Check k = CHECK("pixel (ctx->sample) and shade_area", DOC_KEYS);
+  for (int seed = 0; seed < 3; seed++) {
+    double frac = red[1][seed] / red[0][seed];
+    CHECK_THAT(&k, frac > 0.1 && frac < 0.9, "a pixel on a penumbra, 64 camera samples of 1 "
+               "light sample each, seed %d: %.3f of the unshadowed red, expected between 0.1 "
+               "and 0.9 (64 light samples in all; 0 or 1 means every camera sample reused one "
+               "light sample)", seed + 1, frac);
+  }
 }
 
 Test(area_light, camera_sees_P_over_A_on_the_front_face_and_black_behind)
@@ -336,11 +492,12 @@ Test(area_light, camera_sees_P_over_A_on_the_front_face_and_black_behind)
   load(&s, "light area corner -1 3 -1 edge1 2 0 0 edge2 0 0 2 power 6 4 2");
   RenderSettings set = {.seed = 1, .samples = 1, .light_samples = 4};
   RenderCtx ctx = {.set = &set};
+  Check k = CHECK("shade_trace", "docs/08-area-lights.md, \"The light\"");
   Ray up = {.o = vec_make(0.3f, 1.0f, 0.2f), .d = vec_make(0.0f, 1.0f, 0.0f)};
-  vec3s c = shade_trace(&s, up, &ctx);
-  cr_expect(c.x == 1.5f && c.y == 1.0f && c.z == 0.5f, "front: (%g, %g, %g)", c.x, c.y, c.z);
+  CHECK_VEC(&k, vec_make(1.5f, 1.0f, 0.5f), shade_trace(&s, up, &ctx), 0.0,
+            "a ray up into the front of a 2 x 2 light of power (6, 4, 2): P / A");
   Ray down = {.o = vec_make(0.3f, 6.0f, 0.2f), .d = vec_make(0.0f, -1.0f, 0.0f)};
-  c = shade_trace(&s, down, &ctx);
-  cr_expect(vec_is_zero(c), "back: (%g, %g, %g)", c.x, c.y, c.z);
+  CHECK_VEC(&k, glms_vec3_zero(), shade_trace(&s, down, &ctx), 0.0,
+            "a ray down onto the back of the same light (one-sided): black");
   scene_free(&s);
 }

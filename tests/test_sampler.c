@@ -1,20 +1,20 @@
-/* Unit tests of step 07's sampling patterns (common/sampler.c): counts, one
- * sample per stratum (cells written out by hand), values in [0,1), the same
- * key gives the same samples, neighbouring pixels differ, the Sobol points
- * form (0,m,2)-nets, and the stochastic estimates are unbiased over seeds.
+/* Unit tests of step 07's sampling patterns (common/sampler.c): one sample
+ * per stratum (cells written out by hand), values in [0,1), the same key
+ * gives the same samples, neighbouring pixels differ, the Sobol points form
+ * (0,m,2)-nets, and the stochastic estimates are unbiased over seeds.
  * docs/07-antialiasing.md. */
-#include <criterion/criterion.h>
-
-#include <math.h>
-
+#include "check.h"
 #include "sampler.h"
+
+#define DOC "docs/07-antialiasing.md, \"Samplers\""
 
 static const SamplerKind STOCHASTIC[] = {SAMPLER_RANDOM, SAMPLER_JITTER, SAMPLER_SOBOL};
 
 static vec2s get(SamplerKind kind, uint32_t seed, uint32_t pixel, uint32_t index,
                  uint32_t count)
 {
-  return sampler_get(kind, seed, pixel, index, 0, count);
+  SamplerPattern p = sampler_pattern(kind, seed, pixel, count);
+  return sampler_point(&p, index);
 }
 
 static bool in_box(vec2s s, double x0, double x1, double y0, double y1)
@@ -25,58 +25,71 @@ static bool in_box(vec2s s, double x0, double x1, double y0, double y1)
 Test(sampler, names_round_trip)
 {
   const char *names[] = {"center", "grid", "random", "jitter", "sobol"};
+  Check c = CHECK("sampler_parse, sampler_name", DOC);
   for (int k = 0; k < 5; k++) {
-    SamplerKind kind;
-    cr_assert(sampler_parse(names[k], &kind), "%s", names[k]);
-    cr_expect_str_eq(sampler_name(kind), names[k]);
+    SamplerKind kind = SAMPLER_COUNT;
+    bool ok = sampler_parse(names[k], &kind);
+    CHECK_THAT(&c, ok && !strcmp(sampler_name(kind), names[k]),
+               "'%s' parsed %s and named back '%s'", names[k], ok ? "ok" : "as unknown",
+               ok ? sampler_name(kind) : "-");
   }
   SamplerKind kind;
-  cr_expect_not(sampler_parse("halton", &kind));
+  CHECK_INT(&c, 0, sampler_parse("halton", &kind), "'halton' is no sampler: parse result");
 }
 
 Test(sampler, center_puts_every_sample_at_the_pixel_centre)
 {
+  Check c = CHECK("sampler_point", DOC);
   for (uint32_t k = 0; k < 16; k++) {
     vec2s s = get(SAMPLER_CENTER, 7, 123, k, 16);
-    cr_expect(s.x == 0.5f && s.y == 0.5f, "sample %u at (%g, %g)", k, s.x, s.y);
+    CHECK_THAT(&c, s.x == 0.5f && s.y == 0.5f,
+               "center, sample %u of 16: expected (0.5, 0.5), got (%.9g, %.9g)", k, s.x, s.y);
   }
+  CHECK_DONE(&c);
 }
 
 Test(sampler, every_sample_lies_in_the_unit_square)
 {
   /* Counts 1..70 (squares and not), the last index of the largest count, and
    * many pixels and seeds: never below 0, never 1 or more. */
+  Check c = CHECK("sampler_point", DOC);
   for (int kind = 0; kind < SAMPLER_COUNT; kind++)
     for (uint32_t count = 1; count <= 70; count++)
       for (uint32_t pixel = 0; pixel < 40; pixel++)
         for (uint32_t k = 0; k < count; k++) {
           vec2s s = get((SamplerKind)kind, pixel * 7919u, pixel, k, count);
-          cr_assert(in_box(s, 0.0, 1.0, 0.0, 1.0), "%s count %u sample %u: (%.9g, %.9g)",
-                    sampler_name((SamplerKind)kind), count, k, s.x, s.y);
+          CHECK_THAT(&c, in_box(s, 0.0, 1.0, 0.0, 1.0), "%s, sample %u of %u, pixel %u: "
+                     "expected a point of [0,1)^2, got (%.9g, %.9g)",
+                     sampler_name((SamplerKind)kind), k, count, pixel, s.x, s.y);
         }
   for (int kind = 0; kind < SAMPLER_COUNT; kind++) {
     vec2s s = get((SamplerKind)kind, 1, 5, 65535, 65536);
-    cr_expect(in_box(s, 0.0, 1.0, 0.0, 1.0), "%s: (%.9g, %.9g)",
-              sampler_name((SamplerKind)kind), s.x, s.y);
+    CHECK_THAT(&c, in_box(s, 0.0, 1.0, 0.0, 1.0), "%s, sample 65535 of 65536: expected a "
+               "point of [0,1)^2, got (%.9g, %.9g)", sampler_name((SamplerKind)kind), s.x, s.y);
   }
+  CHECK_DONE(&c);
 }
 
 /* Grid and jitter with count = k^2: sample c lies in cell (c mod k, c div k)
  * of the k x k grid, at its centre for grid. */
 Test(sampler, square_counts_put_one_sample_in_each_grid_cell)
 {
+  Check c = CHECK("sampler_point", DOC);
   for (uint32_t k = 1; k <= 9; k++)
-    for (uint32_t c = 0; c < k * k; c++) {
-      double x0 = (double)(c % k) / k, y0 = (double)(c / k) / k, h = 1.0 / k;
-      vec2s g = get(SAMPLER_GRID, 3, 11, c, k * k);
-      cr_expect(fabs(g.x - (x0 + h / 2)) < 1e-6 && fabs(g.y - (y0 + h / 2)) < 1e-6,
-                "grid %ux%u cell %u at (%g, %g)", k, k, c, g.x, g.y);
+    for (uint32_t cell = 0; cell < k * k; cell++) {
+      double x0 = (double)(cell % k) / k, y0 = (double)(cell / k) / k, h = 1.0 / k;
+      vec2s g = get(SAMPLER_GRID, 3, 11, cell, k * k);
+      CHECK_THAT(&c, fabs(g.x - (x0 + h / 2)) < 1e-6 && fabs(g.y - (y0 + h / 2)) < 1e-6,
+                 "grid %ux%u, sample %u: expected the centre of its cell (%.6g, %.6g), got "
+                 "(%.9g, %.9g)", k, k, cell, x0 + h / 2, y0 + h / 2, g.x, g.y);
       for (uint32_t pixel = 0; pixel < 20; pixel++) {
-        vec2s s = get(SAMPLER_JITTER, 3, pixel, c, k * k);
-        cr_expect(in_box(s, x0, x0 + h, y0, y0 + h), "jitter %ux%u cell %u at (%g, %g)",
-                  k, k, c, s.x, s.y);
+        vec2s s = get(SAMPLER_JITTER, 3, pixel, cell, k * k);
+        CHECK_THAT(&c, in_box(s, x0, x0 + h, y0, y0 + h), "jitter %ux%u, sample %u, pixel %u: "
+                   "expected a point of [%.4g, %.4g) x [%.4g, %.4g), got (%.9g, %.9g)", k, k,
+                   cell, pixel, x0, x0 + h, y0, y0 + h, s.x, s.y);
       }
     }
+  CHECK_DONE(&c);
 }
 
 /* Other counts: r = floor(sqrt(n)) rows of equal-area cells (sampler.h). The
@@ -107,59 +120,59 @@ static const struct {
 
 Test(sampler, other_counts_put_one_sample_in_each_equal_area_cell)
 {
+  Check c = CHECK("sampler_point", DOC);
   for (size_t l = 0; l < sizeof LAYOUTS / sizeof LAYOUTS[0]; l++) {
     uint32_t n = LAYOUTS[l].n;
-    double area = 0.0;
-    for (uint32_t c = 0; c < n; c++) {
-      Cell b = LAYOUTS[l].cells[c];
-      area += (b.x1 - b.x0) * (b.y1 - b.y0);
-      cr_expect(fabs((b.x1 - b.x0) * (b.y1 - b.y0) - 1.0 / n) < 1e-12);
-      vec2s g = get(SAMPLER_GRID, 1, 0, c, n);
-      cr_expect(fabs(g.x - (b.x0 + b.x1) / 2) < 1e-6 && fabs(g.y - (b.y0 + b.y1) / 2) < 1e-6,
-                "grid n=%u cell %u at (%g, %g)", n, c, g.x, g.y);
+    for (uint32_t cell = 0; cell < n; cell++) {
+      Cell b = LAYOUTS[l].cells[cell];
+      vec2s g = get(SAMPLER_GRID, 1, 0, cell, n);
+      CHECK_THAT(&c, fabs(g.x - (b.x0 + b.x1) / 2) < 1e-6 && fabs(g.y - (b.y0 + b.y1) / 2) < 1e-6,
+                 "grid, %u samples, sample %u: expected the centre of [%.4g, %.4g) x "
+                 "[%.4g, %.4g), got (%.9g, %.9g)", n, cell, b.x0, b.x1, b.y0, b.y1, g.x, g.y);
       for (uint32_t pixel = 0; pixel < 50; pixel++) {
-        vec2s s = get(SAMPLER_JITTER, 9, pixel, c, n);
-        cr_expect(in_box(s, b.x0, b.x1, b.y0, b.y1), "jitter n=%u cell %u at (%g, %g)",
-                  n, c, s.x, s.y);
+        vec2s s = get(SAMPLER_JITTER, 9, pixel, cell, n);
+        CHECK_THAT(&c, in_box(s, b.x0, b.x1, b.y0, b.y1), "jitter, %u samples, sample %u, "
+                   "pixel %u: expected a point of [%.4g, %.4g) x [%.4g, %.4g), got "
+                   "(%.9g, %.9g)", n, cell, pixel, b.x0, b.x1, b.y0, b.y1, s.x, s.y);
       }
     }
-    cr_expect(fabs(area - 1.0) < 1e-12, "n=%u: cells cover %g", n, area);
   }
-}
-
-/* Adaptive sampling's second pass: samples [first, first + count) form their
- * own pattern, sample first + c in cell c. */
-Test(sampler, a_pattern_starting_later_counts_its_cells_from_first)
-{
-  for (uint32_t c = 0; c < 9; c++) {
-    vec2s g = sampler_get(SAMPLER_GRID, 1, 2, 4 + c, 4, 9);
-    cr_expect(fabs(g.x - ((c % 3) + 0.5) / 3) < 1e-6 && fabs(g.y - ((c / 3) + 0.5) / 3) < 1e-6,
-              "cell %u at (%g, %g)", c, g.x, g.y);
-  }
+  CHECK_DONE(&c);
 }
 
 Test(sampler, the_same_key_gives_the_same_samples)
 {
+  Check c = CHECK("sampler_point", DOC);
   for (size_t s = 0; s < 3; s++)
     for (uint32_t k = 0; k < 64; k++) {
       vec2s a = get(STOCHASTIC[s], 42, 1000, k, 64), b = get(STOCHASTIC[s], 42, 1000, k, 64);
-      cr_expect(a.x == b.x && a.y == b.y, "%s sample %u", sampler_name(STOCHASTIC[s]), k);
+      CHECK_THAT(&c, a.x == b.x && a.y == b.y, "%s, seed 42, pixel 1000, sample %u asked "
+                 "twice: (%.9g, %.9g) then (%.9g, %.9g)", sampler_name(STOCHASTIC[s]), k, a.x,
+                 a.y, b.x, b.y);
+      vec2s g = sampler_get(STOCHASTIC[s], 42, 1000, k, 64);
+      CHECK_THAT(&c, a.x == g.x && a.y == g.y, "%s, sample %u: sampler_get (%.9g, %.9g) and "
+                 "sampler_point (%.9g, %.9g) differ", sampler_name(STOCHASTIC[s]), k, g.x, g.y,
+                 a.x, a.y);
     }
+  CHECK_DONE(&c);
 }
 
 /* Neighbouring pixels (and other seeds) get other points: with 24-bit
  * coordinates, equal first samples would be a 2^-48 coincidence per pair. */
 Test(sampler, neighbouring_pixels_and_other_seeds_differ)
 {
+  Check c = CHECK("sampler_point", DOC);
   for (size_t s = 0; s < 3; s++)
     for (uint32_t p = 0; p < 200; p++) {
       vec2s a = get(STOCHASTIC[s], 1, p, 0, 16), b = get(STOCHASTIC[s], 1, p + 1, 0, 16);
-      vec2s c = get(STOCHASTIC[s], 2, p, 0, 16);
-      cr_expect(a.x != b.x || a.y != b.y, "%s: pixels %u and %u", sampler_name(STOCHASTIC[s]),
-                p, p + 1);
-      cr_expect(a.x != c.x || a.y != c.y, "%s: seeds 1 and 2, pixel %u",
-                sampler_name(STOCHASTIC[s]), p);
+      vec2s d = get(STOCHASTIC[s], 2, p, 0, 16);
+      CHECK_THAT(&c, a.x != b.x || a.y != b.y, "%s: pixels %u and %u got the same sample 0 "
+                 "(%.9g, %.9g): the pattern must be keyed by the pixel",
+                 sampler_name(STOCHASTIC[s]), p, p + 1, a.x, a.y);
+      CHECK_THAT(&c, a.x != d.x || a.y != d.y, "%s, pixel %u: seeds 1 and 2 got the same "
+                 "sample 0 (%.9g, %.9g)", sampler_name(STOCHASTIC[s]), p, a.x, a.y);
     }
+  CHECK_DONE(&c);
 }
 
 /* The first 2^m Sobol points form a (0,m,2)-net: every box
@@ -168,24 +181,28 @@ Test(sampler, neighbouring_pixels_and_other_seeds_differ)
 Test(sampler, sobol_points_form_a_net_in_every_pixel)
 {
   static int hits[4096];
+  Check c = CHECK("sampler_point", DOC);
   for (uint32_t pixel = 0; pixel < 12; pixel++)
     for (int m = 0; m <= 12; m++) {
       uint32_t n = 1u << m;
       for (int a = 0; a <= m; a++) {
         int b = m - a;
-        for (uint32_t k = 0; k < n; k++)
-          hits[k] = 0;
+        memset(hits, 0, sizeof hits);
+        SamplerPattern p = sampler_pattern(SAMPLER_SOBOL, 5, pixel, n);
         for (uint32_t k = 0; k < n; k++) {
-          vec2s s = get(SAMPLER_SOBOL, 5, pixel, k, n);
+          vec2s s = sampler_point(&p, k);
           uint32_t i = (uint32_t)floor(s.x * (double)(1u << a));
           uint32_t j = (uint32_t)floor(s.y * (double)(1u << b));
           hits[j << a | i]++;
         }
+        int bad = 0;
         for (uint32_t k = 0; k < n; k++)
-          cr_assert(hits[k] == 1, "pixel %u, 2^%d points, boxes 2^-%d x 2^-%d: box %u holds %d",
-                    pixel, m, a, b, k, hits[k]);
+          bad += hits[k] != 1;
+        CHECK_INT(&c, 0, bad, "sobol, pixel %u, the first 2^%d points, boxes 2^-%d x 2^-%d: "
+                  "boxes holding other than one point", pixel, m, a, b);
       }
     }
+  CHECK_DONE(&c);
 }
 
 /* Estimate of the area of the quarter disc x^2 + y^2 < 0.8 (exactly
@@ -219,15 +236,19 @@ Test(sampler, stochastic_samplers_are_unbiased_over_seeds)
 {
   const double exact = 0.2 * 3.14159265358979323846;
   const uint32_t counts[] = {4, 16, 64};
+  Check c = CHECK("sampler_point", DOC);
   for (size_t s = 0; s < 3; s++)
-    for (size_t c = 0; c < 3; c++) {
+    for (size_t n = 0; n < 3; n++) {
       double mean, var;
-      over_seeds(STOCHASTIC[s], counts[c], 64, &mean, &var);
+      over_seeds(STOCHASTIC[s], counts[n], 64, &mean, &var);
       double se = sqrt(var / 64);
-      cr_expect(se > 0.0, "%s: the estimates never vary", sampler_name(STOCHASTIC[s]));
-      cr_expect(fabs(mean - exact) <= 4.0 * se, "%s, %u samples: mean %.5f, exact %.5f, "
-                "standard error %.5f", sampler_name(STOCHASTIC[s]), counts[c], mean, exact, se);
+      CHECK_THAT(&c, se > 0.0, "%s, %u samples: the estimate is the same for 64 seeds",
+                 sampler_name(STOCHASTIC[s]), counts[n]);
+      CHECK_NEAR(&c, exact, mean, 4.0 * se, "%s, %u samples: mean over 64 seeds of the "
+                 "fraction inside a quarter disc (4 standard errors)",
+                 sampler_name(STOCHASTIC[s]), counts[n]);
     }
+  CHECK_DONE(&c);
 }
 
 /* Random sampling is Bernoulli: the estimate's variance is p(1-p)/n. Over 256
@@ -243,10 +264,11 @@ Test(sampler, random_has_binomial_variance_and_stratified_patterns_less)
   over_seeds(SAMPLER_JITTER, n, 256, &mean, &var_jitter);
   over_seeds(SAMPLER_SOBOL, n, 256, &mean, &var_sobol);
   double binomial = p * (1.0 - p) / n;
-  cr_expect(var_random > 0.65 * binomial && var_random < 1.35 * binomial,
-            "random: variance %.5f, p(1-p)/n = %.5f", var_random, binomial);
-  cr_expect(var_jitter < 0.5 * binomial, "jitter variance %.5f vs random's %.5f",
-            var_jitter, binomial);
-  cr_expect(var_sobol < 0.5 * binomial, "sobol variance %.5f vs random's %.5f",
-            var_sobol, binomial);
+  Check c = CHECK("sampler_point", DOC);
+  CHECK_REL(&c, binomial, var_random, 0.35, "random, 16 samples: variance over 256 seeds "
+            "against p(1-p)/n");
+  CHECK_THAT(&c, var_jitter < 0.5 * binomial, "jitter, 16 samples: variance %.5f, expected "
+             "under half of random's %.5f (stratified)", var_jitter, binomial);
+  CHECK_THAT(&c, var_sobol < 0.5 * binomial, "sobol, 16 samples: variance %.5f, expected "
+             "under half of random's %.5f (stratified)", var_sobol, binomial);
 }

@@ -1,14 +1,14 @@
 #!/usr/bin/env bash
 # Error of step 07's antialiasing against a converged render (the table of
 # docs/07-antialiasing.md): RMSE over all channels of the .pfm films, linear
-# floats not clamped, per sampler, camera sample count and adaptive on/off,
-# with the rays traced (camera and shadow) and the render time. The reference is a 64 x 64
+# floats not clamped, per sampler and camera sample count (--adaptive 0), and
+# for adaptive sampling per sample count and threshold, with the rays traced
+# (camera and shadow) and the render time. The reference is a 64 x 64
 # jittered render with another seed, so no test render shares its samples.
-# Usage: tools/aa-error.sh [OUT_DIR [THRESHOLD]]   (needs python3; make build first)
+# Usage: tools/aa-error.sh [OUT_DIR]   (needs python3; make build first)
 set -euo pipefail
 bin=build/bin/07-antialiasing
 out=${1:-build/aa-error}
-threshold=${2:-0.05}
 mkdir -p "$out"
 common=(--width 320 --height 240 --threads 2)
 ref=$out/ref.pfm
@@ -29,16 +29,22 @@ PY
 }
 printf '| sampler | samples | adaptive | RMSE | Mrays (camera + shadow) | time (s) |\n'
 printf '|---|---|---|---|---|---|\n'
+# row SAMPLER N ADAPTIVE: one line of the table.
+row() {
+  local f=$out/$1-$2-$3.pfm line rays
+  line=$($bin "${common[@]}" --sampler "$1" --samples "$2" --adaptive "$3" -o "$f" 2>/dev/null)
+  rays=$(sed -E 's/.* ([0-9.]+) Mrays in ([0-9.]+) s.*/\1 | \2/' <<<"$line")
+  printf '| %s | %d | %s | %s | %s |\n' "$([ "$3" = 0 ] && echo "$1" || echo -)" "$2" \
+    "$([ "$3" = 0 ] && echo off || echo "$3")" "$(rmse "$f" "$ref")" "$rays"
+}
 for s in center grid random jitter sobol; do
   for n in ${COUNTS:-1 4 16 64 256}; do
-    for a in 0 "$threshold"; do
-      [ "$a" != 0 ] && [ "$n" -le 4 ] && continue
-      [ $s = center ] && [ "$n" -gt 1 ] && continue
-      f=$out/$s-$n-$a.pfm
-      line=$($bin "${common[@]}" --sampler $s --samples "$n" --adaptive "$a" -o "$f" 2>/dev/null)
-      rays=$(sed -E 's/.* ([0-9.]+) Mrays in ([0-9.]+) s.*/\1 | \2/' <<<"$line")
-      printf '| %s | %d | %s | %s | %s |\n' $s "$n" "$([ "$a" = 0 ] && echo off || echo "$a")" \
-        "$(rmse "$f" "$ref")" "$rays"
-    done
+    [ $s = center ] && [ "$n" -gt 1 ] && continue
+    row $s "$n" 0
+  done
+done
+for n in ${COUNTS_ADAPTIVE:-16 64 256 1024}; do
+  for a in 0.1 0.05 0.02; do
+    row sobol "$n" "$a"
   done
 done

@@ -24,7 +24,7 @@ static vec3s pixel_same_numbers(const Scene *scene, const Film *film, int i, int
   for (int k = 0; k < scene->samples; k++) {
     ctx->sample = (uint32_t)k;
     ctx->samples++;
-    vec2s s = sampler_get((SamplerKind)set->sampler, set->seed, 0, (uint32_t)k, 0,
+    vec2s s = sampler_get((SamplerKind)set->sampler, set->seed, 0, (uint32_t)k,
                           (uint32_t)scene->samples);
     Ray r = camera_ray(&scene->camera, ((float)i + s.x) / (float)film->width,
                        ((float)j + s.y) / (float)film->height);
@@ -60,11 +60,11 @@ static int plot_points(const char *name, int n, const char *out)
   for (int k = 0; k < 3 * SIDE * SIDE; k++)
     rgb[k] = 1.0f;
   for (int k = 0; k < n; k++) {
-    vec2s cell = sampler_get(SAMPLER_GRID, 1, 0, (uint32_t)k, 0, (uint32_t)n);
+    vec2s cell = sampler_get(SAMPLER_GRID, 1, 0, (uint32_t)k, (uint32_t)n);
     dot(rgb, (int)(cell.x * SIDE), (int)(cell.y * SIDE), 2, 0.6f);
   }
   for (int k = 0; k < n; k++) {
-    vec2s s = sampler_get(kind, 1, 0, (uint32_t)k, 0, (uint32_t)n);
+    vec2s s = sampler_get(kind, 1, 0, (uint32_t)k, (uint32_t)n);
     dot(rgb, (int)(s.x * SIDE), (int)(s.y * SIDE), 4, 0.0f);
   }
   bool ok = image_save(out, SIDE, SIDE, rgb, TONEMAP_CLAMP);

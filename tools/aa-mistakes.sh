@@ -12,6 +12,10 @@ gcc -std=c11 -O3 -march=native -fopenmp -ffp-contract=off -D_POSIX_C_SOURCE=2008
   -Werror -Icommon -Isteps/07-antialiasing $(pkg-config --cflags cglm stb) \
   tools/aa-mistakes.c steps/07-antialiasing/shade.c build/obj/gen/07-antialiasing-scene.o \
   build/libcommon.a -lpng -lstb -lm -o $bin/aa-mistakes
+gcc -std=c11 -O3 -march=native -fopenmp -ffp-contract=off -D_POSIX_C_SOURCE=200809L -Wall -Wextra \
+  -Werror -Icommon -Isteps/07-antialiasing $(pkg-config --cflags cglm stb libpng) \
+  tools/aa-samples.c steps/07-antialiasing/shade.c build/obj/gen/07-antialiasing-scene.o \
+  build/libcommon.a -lpng -lstb -lm -o $bin/aa-samples
 mkdir -p docs/img
 for s in grid random jitter sobol; do
   $bin/aa-mistakes points $s 16 docs/img/07-points-$s.png
@@ -28,7 +32,7 @@ run() {
   $bin/aa-mistakes zoom $tmp/$name.pfm 96 95 100 50 docs/img/$name-zoom.png
 }
 s07=$bin/07-antialiasing
-run 07-center-1     $s07 --sampler center --samples 1
+run 07-center-1     $s07 --sampler center --samples 1 --adaptive 0
 run 07-grid-4       $s07 --sampler grid --samples 4 --adaptive 0
 run 07-random-4     $s07 --sampler random --samples 4 --adaptive 0
 run 07-jitter-4     $s07 --sampler jitter --samples 4 --adaptive 0
@@ -36,3 +40,7 @@ run 07-sobol-4      $s07 --sampler sobol --samples 4 --adaptive 0
 run 07-same-numbers $bin/aa-mistakes same-numbers --sampler jitter --samples 4
 run 07-default      $s07
 run 07-converged    $s07 --sampler jitter --samples 1024 --adaptive 0
+# Where the default's adaptive sampling put its samples, and the same zoom.
+$bin/aa-samples 400 300 64 0.05 docs/img/07-samples.png
+$bin/aa-samples 400 300 64 0.05 $tmp/07-samples.pfm
+$bin/aa-mistakes zoom $tmp/07-samples.pfm 96 95 100 50 docs/img/07-samples-zoom.png

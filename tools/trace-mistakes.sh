@@ -22,7 +22,7 @@ mistakes() {
 05-shadows|common/ray.h|s/float push = 2.0f \* hit->p_err \* vec_sum_abs(hit->n);/float push = 0.0f;/|155 80|shadow
 06-ambient|steps/06-ambient/shade.c|s/return glms_vec3_divs(light->power, hit.t \* hit.t);/return light->power;/|277 14|ambient
 07-antialiasing|steps/07-antialiasing/main.c|s/vec3s lo = glms_vec3_broadcast(1.0f), hi = glms_vec3_zero();/vec3s lo = glms_vec3_zero(), hi = glms_vec3_broadcast(1.0f);/|250 200|samples
-08-area-lights|steps/08-area-lights/shade.c|s/cos_light \/ ((float)pat->n \* r2)/1.0f \/ ((float)pat->n * r2)/|96 160|diffuse
+08-area-lights|steps/08-area-lights/shade.c|s/cos_light \/ ((float)n \* r2)/1.0f \/ ((float)n * r2)/|96 160|diffuse
 EOF
 }
 

@@ -261,27 +261,35 @@ bool accel_build(Scene *scene)
 
 /* ---------------------------------------------------------------- shadow volume */
 
-static bool leaf_may_occlude(const Scene *scene, const Accel *acc, const BvhNode *nd,
-                             const ShadowHull *h)
+/* Shadow-volume queries: the lit shapes that may stop a shadow ray. */
+typedef struct Occluders {
+  int *ids, n, max; /* ids[0 .. n-1] found so far; more than max: give up */
+} Occluders;
+
+/* Record instance `id`; false when that makes more than o->max. */
+static bool occluder(Occluders *o, int id)
 {
-  for (int k = nd->index; k < nd->index + nd->meta; k++) {
-    const Sphere *s = &scene->instances[acc->spheres[k]].sphere;
-    if (hull_may_meet_sphere(h, s->center, s->radius))
-      return true;
-  }
-  return false;
+  if (o->n == o->max)
+    return false;
+  o->ids[o->n++] = id;
+  return true;
 }
 
-/* The traversal of bvh_any, with boxes and spheres tested against the hull. */
-static bool bvh_may_occlude(const Scene *scene, const Accel *acc, const ShadowHull *h)
+/* The traversal of bvh_any, with boxes and spheres tested against the hull;
+ * false when more than o->max spheres may meet it. */
+static bool bvh_occluders(const Scene *scene, const Accel *acc, const ShadowHull *h,
+                          Occluders *o)
 {
   int stack[STACK], top = 0, node = 0;
   for (;;) {
     const BvhNode *nd = &acc->nodes[node];
     if (hull_may_meet_box(h, nd->lo, nd->hi)) {
       if (nd->meta > 0) {
-        if (leaf_may_occlude(scene, acc, nd, h))
-          return true;
+        for (int k = nd->index; k < nd->index + nd->meta; k++) {
+          const Sphere *s = &scene->instances[acc->spheres[k]].sphere;
+          if (hull_may_meet_sphere(h, s->center, s->radius) && !occluder(o, acc->spheres[k]))
+            return false;
+        }
       } else {
         stack[top++] = nd->index + 1;
         node = nd->index;
@@ -289,7 +297,7 @@ static bool bvh_may_occlude(const Scene *scene, const Accel *acc, const ShadowHu
       }
     }
     if (top == 0)
-      return false;
+      return true;
     node = stack[--top];
   }
 }
@@ -306,19 +314,26 @@ static bool instance_may_occlude(const Instance *inst, const ShadowHull *h)
 
 /* Not inlined: once per shading point, and inlined (LTO) into a step's
  * sample loop it made that loop's code 10 % slower even where never called. */
-__attribute__((noinline)) bool accel_quad_unoccluded(const Scene *scene, const Hit *hit,
-                                                     const Quad *q)
+__attribute__((noinline)) int accel_quad_occluders(const Scene *scene, const Hit *hit,
+                                                   const Quad *q, int *ids, int max)
 {
   ShadowHull h = hull_make(hit, q);
+  Occluders o = {.ids = ids, .max = max};
   if (!scene->index || scene->index->destroy != accel_destroy) {
     for (int k = 0; k < scene->n_shapes; k++)
-      if (instance_may_occlude(&scene->instances[k], &h))
-        return false;
-    return true;
+      if (instance_may_occlude(&scene->instances[k], &h) && !occluder(&o, k))
+        return -1;
+    return o.n;
   }
   const Accel *acc = (const Accel *)scene->index;
   for (int k = 0; k < acc->n_others_lit; k++)
-    if (instance_may_occlude(&scene->instances[acc->others[k]], &h))
-      return false;
-  return !(acc->nodes && bvh_may_occlude(scene, acc, &h));
+    if (instance_may_occlude(&scene->instances[acc->others[k]], &h) &&
+        !occluder(&o, acc->others[k]))
+      return -1;
+  return acc->nodes && !bvh_occluders(scene, acc, &h, &o) ? -1 : o.n;
+}
+
+bool accel_quad_unoccluded(const Scene *scene, const Hit *hit, const Quad *q)
+{
+  return accel_quad_occluders(scene, hit, q, NULL, 0) == 0;
 }

@@ -25,4 +25,33 @@ enum { ACCEL_FLAT_MAX = 16 };
  * hierarchy's boxes when there is one; false when unsure. */
 bool accel_quad_unoccluded(const Scene *scene, const Hit *hit, const Quad *q);
 
+/* The lit shapes that may stop such a shadow ray (the same test, shape by
+ * shape): their instance indices in ids[0 .. count-1] and their count, or -1
+ * when more than `max` may (ids then holds some of them). Every other lit
+ * shape lets every such ray pass: scene_occluded over ids alone answers as
+ * over the whole scene. */
+int accel_quad_occluders(const Scene *scene, const Hit *hit, const Quad *q, int *ids, int max);
+
+enum { ACCEL_VIEW_MAX = 8 };
+
+/* A view of a scene whose shadow queries test only the shapes that may stop
+ * a shadow ray from one hit point toward one area light (accel/shadow_view.c);
+ * the storage behind the view's index. */
+typedef struct AccelShadowView {
+  SceneIndex index;    /* the view's index: `any` over ids only */
+  const Scene *scene;  /* the scene viewed: its index answers `closest` */
+  int n;
+  int ids[ACCEL_VIEW_MAX];
+} AccelShadowView;
+
+/* Fill *view with `scene` as seen by the shadow rays ray_spawn(hit, l) toward
+ * the front-side points of q: when no lit shape can stop them, a view with no
+ * occluders (scene_view_unoccluded); when at most ACCEL_VIEW_MAX may, one
+ * whose shadow queries test only those (its index lives in *storage, which
+ * must outlive the view); otherwise the scene itself. Returns the number of
+ * shapes the view tests: 0, 1 .. ACCEL_VIEW_MAX, or -1 for the whole scene.
+ * scene_occluded answers on the view exactly as on the scene for those rays. */
+int accel_shadow_view(const Scene *scene, const Hit *hit, const Quad *q,
+                      AccelShadowView *storage, Scene *view);
+
 #endif

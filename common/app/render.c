@@ -6,6 +6,7 @@
 
 #include <omp.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <unistd.h>
 
 enum { TILE = 16 };
@@ -26,6 +27,8 @@ static void render_tile(const Scene *scene, Film *film, RenderPixelFn pixel,
   int i0 = (tile % tiles_x) * TILE, j0 = (tile / tiles_x) * TILE;
   int i1 = i0 + TILE < film->width ? i0 + TILE : film->width;
   int j1 = j0 + TILE < film->height ? j0 + TILE : film->height;
+  ctx->tile++; /* render_point forgets the last tile's points: what a tile
+                * traces never depends on which tiles the thread did before */
   for (int j = j0; j < j1; j++)
     for (int i = i0; i < i1; i++) {
       ctx->pixel = (uint32_t)j * (uint32_t)film->width + (uint32_t)i;
@@ -72,6 +75,8 @@ void render(const Scene *scene, Film *film, RenderPixelFn pixel,
     }
   }
   stats->seconds = omp_get_wtime() - t0;
+  for (int k = 0; k < threads; k++)
+    free(ctx[k].memo);
   stats->threads = threads;
   stats->rays = stats->samples = 0;
   for (int k = 0; k < threads; k++) {

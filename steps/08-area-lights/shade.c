@@ -8,8 +8,9 @@
 #include "rng.h"
 #include "sampler.h"
 
-/* The shadow-volume test pays only with more samples than this. */
-enum { SHADOW_VOLUME_MIN_SAMPLES = 4 };
+/* The shadow-volume test pays only with more samples than this; with the
+ * grid, a point it clears takes a quarter of the samples, at least this many. */
+enum { SHADOW_VOLUME_MIN_SAMPLES = 4, GRID_UNOCCLUDED_MIN = 16 };
 
 bool shade_visible(const Scene *scene, const Hit *hit, vec3s l, float dist, RenderCtx *ctx)
 {
@@ -56,35 +57,26 @@ vec3s shade_phong_light(const Material *m, const Hit *hit, vec3s v, vec3s li, ve
 }
 
 /* BEGIN SOLUTION step 08 */
-/* How one shading point spreads its N samples over the light: step 07's
- * patterns (sampler_get) on the light's parameters (a, b) in [0,1)^2. */
-typedef struct LightPattern {
-  SamplerKind kind;
-  uint32_t key;   /* the seed sampler_get is given */
-  uint32_t pixel;
-  int n;          /* samples of this light */
-} LightPattern;
-
-static LightPattern pattern_make(const RenderCtx *ctx, int light, int n)
+/* Where the n samples of light `light` go for the camera sample being traced:
+ * step 07's pattern (--sampler) on the light's parameters (a, b) in [0,1)^2,
+ * with a key of its own for each light and camera sample (the first draw of
+ * the stream (seed ^ golden * (light + 1), pixel, camera sample)). Keyed by
+ * the seed alone, every camera sample of a pixel would reuse one light
+ * pattern: N light samples per pixel instead of N per camera sample. */
+static SamplerPattern light_pattern(const RenderCtx *ctx, int light, int n)
 {
-  /* A key of its own for each light and camera sample: the first draw of the
-   * stream (seed ^ golden * (light + 1), pixel, camera sample). Keyed by the
-   * seed alone, every camera sample of a pixel would reuse one light pattern
-   * and the light would get N samples per pixel instead of N per sample. */
   Rng r = rng_make(ctx->set->seed ^ (0x9e3779b9u * (uint32_t)(light + 1)), ctx->pixel,
                    ctx->sample);
-  LightPattern pat = {.kind = (SamplerKind)ctx->set->sampler, .key = rng_next(&r),
-                      .pixel = ctx->pixel, .n = n};
-  return pat;
+  return sampler_pattern((SamplerKind)ctx->set->sampler, rng_next(&r), ctx->pixel,
+                         (uint32_t)n);
 }
 
-/* Sample k of N as a point light of power (P/N) cos(theta_light): its
- * radiance at the hit point, *l toward it and *dist to it. Zero when the point
- * is behind the light (one-sided) or on it. */
-static vec3s area_incident(const Light *light, const LightPattern *pat, int k,
-                           const Hit *hit, vec3s *l, float *dist)
+/* The light's point (a, b) as a point light of power (P/n) cos(theta_light):
+ * its radiance at the hit point, *l toward it and *dist to it. Zero when the
+ * hit point is behind the light (one-sided) or on it. */
+static vec3s area_incident(const Light *light, vec2s ab, int n, const Hit *hit, vec3s *l,
+                           float *dist)
 {
-  vec2s ab = sampler_get(pat->kind, pat->key, pat->pixel, (uint32_t)k, 0, (uint32_t)pat->n);
   vec3s to_x = glms_vec3_sub(quad_point(&light->quad, ab.x, ab.y), hit->p);
   float r2 = glms_vec3_dot(to_x, to_x);
   *dist = sqrtf(r2);
@@ -94,23 +86,23 @@ static vec3s area_incident(const Light *light, const LightPattern *pat, int k,
   float cos_light = -glms_vec3_dot(*l, light->quad.normal);
   if (!(cos_light > 0.0f))
     return glms_vec3_zero();
-  return glms_vec3_scale(light->power, cos_light / ((float)pat->n * r2));
+  return glms_vec3_scale(light->power, cos_light / ((float)n * r2));
 }
 /* END SOLUTION */
 
-vec3s shade_area(const Scene *scene, int light_index, const Hit *hit, vec3s v,
+vec3s shade_area(const Scene *scene, int light_index, const Hit *hit, vec3s v, int n,
                  RenderCtx *ctx)
 {
   vec3s c = glms_vec3_zero();
   /* BEGIN SOLUTION step 08 */
   const Light *light = &scene->lights[light_index];
   const Material *m = &scene->materials[hit->inst->material];
-  int n = ctx->set->light_samples;
-  LightPattern pat = pattern_make(ctx, light_index, n);
+  SamplerPattern pattern = light_pattern(ctx, light_index, n);
   for (int k = 0; k < n; k++) {
     vec3s l;
     float dist;
-    vec3s li = area_incident(light, &pat, k, hit, &l, &dist);
+    vec2s ab = sampler_point(&pattern, (uint32_t)k);
+    vec3s li = area_incident(light, ab, n, hit, &l, &dist);
     /* A sample that adds nothing needs no shadow ray. */
     if (vec_is_zero(li) || !(glms_vec3_dot(hit->n, l) > 0.0f))
       continue;
@@ -126,15 +118,22 @@ static vec3s shade_light(const Scene *scene, int k, const Hit *hit, vec3s v, Ren
 {
   const Light *light = &scene->lights[k];
   if (light->type == LIGHT_AREA) {
-    /* A speed-up, not the lesson (docs/performance.md): when no lit shape can
-     * stand between the point and the light, the samples are shaded in a view
-     * of the scene whose shadow queries answer "nothing" without a ray. */
-    if (ctx->set->light_samples > SHADOW_VOLUME_MIN_SAMPLES &&
-        accel_quad_unoccluded(scene, hit, &light->quad)) {
-      Scene view = scene_view_unoccluded(scene);
-      return shade_area(&view, k, hit, v, ctx);
-    }
-    return shade_area(scene, k, hit, v, ctx);
+    /* A speed-up, not the lesson (docs/performance.md): the samples are
+     * shaded in a view of the scene whose shadow queries test only the lit
+     * shapes that may stand between the point and the light, and answer
+     * "nothing" without a ray when none can. There, with the grid, a quarter
+     * of its samples suffice: without a shadow edge the light's term is
+     * smooth, and the grid's error on it small. */
+    int n = ctx->set->light_samples;
+    if (n <= SHADOW_VOLUME_MIN_SAMPLES)
+      return shade_area(scene, k, hit, v, n, ctx);
+    AccelShadowView storage;
+    Scene view;
+    int few = n / 4 > GRID_UNOCCLUDED_MIN ? n / 4 : GRID_UNOCCLUDED_MIN;
+    if (accel_shadow_view(scene, hit, &light->quad, &storage, &view) == 0 &&
+        ctx->set->sampler == SAMPLER_GRID && few < n)
+      n = few;
+    return shade_area(&view, k, hit, v, n, ctx);
   }
   vec3s l;
   vec3s li = shade_incident(scene, &scene->lights[k], hit, &l, ctx);

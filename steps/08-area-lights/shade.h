@@ -21,12 +21,14 @@ vec3s shade_incident(const Scene *scene, const Light *light, const Hit *hit,
 vec3s shade_phong_light(const Material *m, const Hit *hit, vec3s v, vec3s li, vec3s l);
 
 /* Phong's contribution of area light `light_index` at the hit point, seen
- * from the unit direction v: the sum over ctx->set->light_samples samples x_k
- * on the light, each a point light of power (P/N) cos(theta_light) (zero when
- * the point is behind the light) that counts only when nothing lies between
- * (shade_visible). The samples follow ctx->set->sampler's pattern, keyed by
- * seed, light, pixel and camera sample. */
-vec3s shade_area(const Scene *scene, int light_index, const Hit *hit, vec3s v,
+ * from the unit direction v: the sum over n samples x_k on the light, each a
+ * point light of power (P/n) cos(theta_light) (zero when the point is behind
+ * the light) that counts only when nothing lies between (shade_visible). The
+ * samples follow ctx->set->sampler's pattern, keyed by seed, light, pixel and
+ * camera sample. shade_phong asks for ctx->set->light_samples samples (with
+ * the grid, a quarter of them, at least 16, where nothing can shadow the
+ * light). */
+vec3s shade_area(const Scene *scene, int light_index, const Hit *hit, vec3s v, int n,
                  RenderCtx *ctx);
 
 /* Phong with ambient: the colour the hit point sends toward `eye`, m_amb l_amb
