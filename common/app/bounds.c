@@ -3,6 +3,7 @@
 #include "app/bounds.h"
 
 #include <math.h>
+#include <string.h>
 
 #include "quad.h"
 
@@ -24,9 +25,9 @@ bool bounds_direction(Lexer *lx, const Field *f, const char *what)
   double len = sqrt((double)f->v.x * f->v.x + (double)f->v.y * f->v.y +
                     (double)f->v.z * f->v.z);
   if (len < LEXER_MIN_LENGTH || len > LEXER_MAX_COORD)
-    return lexer_fail(lx, f->val_col, "expected a %s of length 1e-18 to 1e18 (it is "
-                      "normalised in float), found '%s'", what,
-                      fields_text(lx, f, 3, text, sizeof text));
+    return lexer_fail(lx, f->val_col, "expected %s %s of length 1e-18 to 1e18 (it is "
+                      "normalised in float), found '%s'", strchr("aeiou", what[0]) ? "an" : "a",
+                      what, fields_text(lx, f, 3, text, sizeof text));
   return true;
 }
 

@@ -22,13 +22,47 @@ bool lexer_fail(const Lexer *lx, int col, const char *fmt, ...)
   return false;
 }
 
-/* What the next token is, for messages: 'text' or "end of line". */
+/* Length of the UTF-8 sequence at s (at most n bytes) when it is valid and
+ * visible, 0 otherwise: invalid bytes, a byte-order mark, no-break and
+ * zero-width spaces would be invisible or garbled in a message. */
+static int visible_utf8(const unsigned char *s, int n)
+{
+  int len = s[0] >= 0xf0 ? 4 : s[0] >= 0xe0 ? 3 : s[0] >= 0xc2 ? 2 : 0;
+  if (len == 0 || len > n || s[0] > 0xf4)
+    return 0;
+  unsigned cp = s[0] & (0x7f >> len);
+  for (int k = 1; k < len; k++) {
+    if ((s[k] & 0xc0) != 0x80)
+      return 0;
+    cp = cp << 6 | (s[k] & 0x3f);
+  }
+  bool overlong = (len == 3 && cp < 0x800) || (len == 4 && (cp < 0x10000 || cp > 0x10ffff));
+  bool invisible = cp == 0xa0 || cp == 0xad || (cp >= 0x2000 && cp <= 0x200f) ||
+                   (cp >= 0x2028 && cp <= 0x202f) || cp == 0x2060 || cp == 0xfeff ||
+                   (cp >= 0xd800 && cp <= 0xdfff);
+  return overlong || invisible ? 0 : len;
+}
+
+/* What the next token is, for messages: 'text' (its first 40 bytes, bytes
+ * that would not show written \xNN) or "end of line". */
 static const char *found(const Lexer *lx, char *buf, size_t size)
 {
   if (lx->pos >= lx->n)
     return "end of line";
   const Token *t = &lx->tok[lx->pos];
-  snprintf(buf, size, "'%.*s'", t->len > 40 ? 40 : t->len, t->s);
+  const unsigned char *s = (const unsigned char *)t->s;
+  int n = t->len > 40 ? 40 : t->len;
+  size_t k = 0;
+  buf[k++] = '\'';
+  for (int i = 0; i < n && k + 6 < size;) {
+    int len = s[i] < 0x80 ? 1 : visible_utf8(s + i, n - i);
+    if (len == 0)
+      k += (size_t)snprintf(buf + k, size - k, "\\x%02x", s[i++]);
+    for (; len > 0; len--)
+      buf[k++] = (char)s[i++];
+  }
+  buf[k++] = '\'';
+  buf[k] = '\0';
   return buf;
 }
 
@@ -153,12 +187,17 @@ static int edit_distance(const char *a, int la, const char *b)
 bool lexer_fail_unknown(const Lexer *lx, const char *what,
                         const char *const *words, int n_words)
 {
-  char buf[64], list[256] = "", hint[96] = "";
+  char buf[192], list[256] = "", hint[96] = "";
   int best = LEXER_TOKEN_MAX;
   const Token *t = &lx->tok[lx->pos];
+  bool full = false;
   for (int k = 0; k < n_words; k++) {
-    snprintf(list + strlen(list), sizeof list - strlen(list), "%s%s",
-             k ? ", " : "", words[k]);
+    size_t used = strlen(list);
+    full = full || used + strlen(words[k]) + 7 >= sizeof list; /* ", word" and ", ..." */
+    if (!full)
+      snprintf(list + used, sizeof list - used, "%s%s", k ? ", " : "", words[k]);
+    else if (!strstr(list, "..."))
+      snprintf(list + used, sizeof list - used, ", ...");
     int d = edit_distance(t->s, t->len, words[k]);
     if (d < best && d <= 2 && d < (int)strlen(words[k])) {
       best = d;
@@ -174,7 +213,7 @@ bool lexer_fail_unknown(const Lexer *lx, const char *what,
  * to 0) is refused like an overflow: write 0. */
 bool lexer_number(Lexer *lx, const char *what, bool nonneg, float *out)
 {
-  char buf[64];
+  char buf[192];
   if (lx->pos >= lx->n)
     return lexer_fail(lx, lx->end_col, "expected %s, found end of line", what);
   const Token *t = &lx->tok[lx->pos];
@@ -209,7 +248,7 @@ bool lexer_vec(Lexer *lx, const char *what, bool nonneg, vec3s *out)
 /* A whole number in [lo, hi]. */
 bool lexer_int(Lexer *lx, const char *what, int lo, int hi, int *out)
 {
-  char buf[64];
+  char buf[192];
   int col = next_col(lx);
   float v = 0.0f;
   if (!lexer_number(lx, what, false, &v))
@@ -225,7 +264,7 @@ bool lexer_int(Lexer *lx, const char *what, int lo, int hi, int *out)
 
 bool lexer_name(Lexer *lx, const char *what, int max_len, Token *out)
 {
-  char buf[64];
+  char buf[192];
   if (lx->pos >= lx->n)
     return lexer_fail(lx, lx->end_col, "expected %s, found end of line", what);
   const Token *t = &lx->tok[lx->pos];
@@ -244,7 +283,7 @@ bool lexer_name(Lexer *lx, const char *what, int max_len, Token *out)
 
 bool lexer_expect_end(Lexer *lx)
 {
-  char buf[64];
+  char buf[192];
   if (lx->pos < lx->n)
     return lexer_fail(lx, lx->tok[lx->pos].col, "expected end of line, found an extra "
                       "value %s", found(lx, buf, sizeof buf));
