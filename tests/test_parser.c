@@ -407,9 +407,15 @@ Test(parser, bytes_that_are_not_text)
     {"film 10 10\nfilm 1\0 10\n", "t.scene:2:7: expected text, found the control byte 0x00", 22},
     /* A NUL byte is refused even in a comment. */
     {"film 10 10 # \0\n", "t.scene:1:14: expected text, found the control byte 0x00", 15},
-    /* A byte-order mark anywhere but at the start is a word like any other. */
+    /* A byte-order mark anywhere but at the start is part of a word, shown
+     * as the bytes it is made of (it would not show). */
     {"film 8 6\n\xef\xbb\xbf" "film 8 6\n",
-     "t.scene:2:1: expected a statement " STATEMENTS ", found '\xef\xbb\xbf" "film'", 0});
+     "t.scene:2:1: expected a statement " STATEMENTS ", found '\\xef\\xbb\\xbffilm'", 0},
+    /* Valid UTF-8 shows as itself; invalid bytes as \xNN. */
+    {"f\xc3\xafl\xc3\xa9 8 6\n",
+     "t.scene:1:1: expected a statement " STATEMENTS ", found 'f\xc3\xafl\xc3\xa9'", 0},
+    {"film 8 6\nfilm\xe9 8 6\n",
+     "t.scene:2:1: expected a statement " STATEMENTS ", found 'film\\xe9'", 0});
 }
 
 /* The messages of the file reader, run with stderr captured. */
