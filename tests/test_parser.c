@@ -415,7 +415,7 @@ Test(parser, bytes_that_are_not_text)
     {"f\xc3\xafl\xc3\xa9 8 6\n",
      "t.scene:1:1: expected a statement " STATEMENTS ", found 'f\xc3\xafl\xc3\xa9'", 0},
     {"film 8 6\nfilm\xe9 8 6\n",
-     "t.scene:2:1: expected a statement " STATEMENTS ", found 'film\\xe9'", 0});
+     "t.scene:2:1: expected a statement " STATEMENTS ", found 'film\\xe9'; did you mean 'film'?", 0});
 }
 
 /* The messages of the file reader, run with stderr captured. */
