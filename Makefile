@@ -139,7 +139,7 @@ $(1)_TOBJ := $$(patsubst %,$(BUILD)/obj/tests/$(1)/test_%.o,$$(TESTS_$(1))) \
 $(BUILD)/obj/tests/$(1)/%.o: tests/%.c | $(BUILD)/.deps
 	@mkdir -p $$(@D)
 	@echo "CC $$<  ($(1) test)"
-	@$(CC) $(CFLAGS) $(PKG_CFLAGS) -Isteps/$(1) -Itests \
+	@$(CC) $(CFLAGS) $$(PKG_CFLAGS) -Isteps/$(1) -Itests \
 	  -DSTEP_NAME='"$(1)"' -DBUILD_DIR='"$(BUILD)"' -c $$< -o $$@
 $(BUILD)/tests/$(1): $$($(1)_TOBJ) $$($(1)_LIB) $(LIBCOMMON) $(BUILD)/bin/$(1)
 	@mkdir -p $$(@D)
