@@ -41,6 +41,9 @@ test-reliability: $(BUILD)/tests/reliability
 # its fuller UBSan: float-cast-overflow (in clang's "undefined"), float
 # division by zero and local array bounds besides. Debian's clang, libomp for
 # OpenMP. docs/reliability.md, "Sanitizers".
+ifneq ($(SAN),)
+  export LSAN_OPTIONS := suppressions=$(CURDIR)/tests/lsan.supp:print_suppressions=0
+endif
 DEB_CLANG := clang libclang-rt-dev libomp-dev llvm
 CLANG_SAN_FLAGS := -fsanitize=address,undefined,float-divide-by-zero,local-bounds \
                    -fsanitize-ignorelist=tests/fuzz/ubsan-ignore.txt \
