@@ -51,6 +51,8 @@ CLANG_SAN_FLAGS := -fsanitize=address,undefined,float-divide-by-zero,local-bound
 clang-deps:
 	@$(call need_debs,$(DEB_CLANG))
 sanitize-clang: clang-deps
+	@if [ tests/fuzz/ubsan-ignore.txt -nt build/san-clang/.ignorelist ]; then \
+	  rm -rf build/san-clang/obj; mkdir -p build/san-clang; touch build/san-clang/.ignorelist; fi
 	$(MAKE) BUILD=build/san-clang CC=clang SAN=1 SAN_FLAGS='$(CLANG_SAN_FLAGS)' \
 	  OPT='-O1' LDFLAGS= test
 

@@ -222,7 +222,7 @@ static bool build_tree(Accel *acc, const Scene *scene, const int *ids, int n, bo
   for (int k = 0; k < n; k++)
     acc->spheres[k] = ids[acc->spheres[k]];
   for (int k = 0; k < bvh.n_nodes; k++)
-    if (bvh.nodes[k].meta > 0)
+    if (bvh.nodes[k].meta > 1)
       qsort(acc->spheres + bvh.nodes[k].index, (size_t)bvh.nodes[k].meta, sizeof(int),
             compare_int);
   acc->nodes = bvh.nodes;

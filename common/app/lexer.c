@@ -13,6 +13,8 @@
 /* Print `FILE:LINE:COL: message` and return false. */
 bool lexer_fail(const Lexer *lx, int col, const char *fmt, ...)
 {
+  if (lx->quiet)
+    return false;
   va_list ap;
   va_start(ap, fmt);
   fprintf(stderr, "%s:%d:%d: ", lx->file, lx->line, col);
@@ -73,8 +75,10 @@ static int next_col(const Lexer *lx)
 
 bool lexer_is(const Token *t, const char *word)
 {
-  return t->s[0] == word[0] && strncmp(t->s, word, (size_t)t->len) == 0 &&
-         word[t->len] == '\0';
+  int k = 0; /* stops at word's NUL too: a token holds no NUL */
+  while (k < t->len && t->s[k] == word[k])
+    k++;
+  return k == t->len && word[k] == '\0';
 }
 
 void lexer_init(Lexer *lx, const char *file, const char *text, size_t len)
@@ -83,7 +87,11 @@ void lexer_init(Lexer *lx, const char *file, const char *text, size_t len)
   lx->file = file;
   lx->next = text;
   lx->end = text + len;
-  if (len >= 3 && memcmp(text, "\xef\xbb\xbf", 3) == 0) /* UTF-8 byte-order mark */
+}
+
+void lexer_skip_bom(Lexer *lx)
+{
+  if (lx->end - lx->next >= 3 && memcmp(lx->next, "\xef\xbb\xbf", 3) == 0)
     lx->next += 3;
 }
 

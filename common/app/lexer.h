@@ -29,11 +29,15 @@ typedef struct Lexer {
   Token tok[LEXER_MAX_TOKENS];
   int n, pos;                /* words on this line, next one to read */
   int end_col;               /* column just past the line's last word */
+  bool quiet;                /* errors are not printed (lexer_fail only fails) */
 } Lexer;
 
-/* Start reading the `len` bytes of `text`; `file` names it in messages. A
- * UTF-8 byte-order mark at its start is skipped. */
+/* Start reading the `len` bytes of `text`; `file` names it in messages. */
 void lexer_init(Lexer *lx, const char *file, const char *text, size_t len);
+
+/* Skip a UTF-8 byte-order mark at the start of the text, if any (a file's
+ * start only: anywhere else it is part of a word). */
+void lexer_skip_bom(Lexer *lx);
 
 /* Split the next line that has words (comments start at '#'). Returns 1 with
  * the words in lx->tok, 0 at the end of the text, -1 after printing an error
@@ -46,7 +50,8 @@ bool lexer_is(const Token *t, const char *word);
 /* True when the next word is `word` (not consumed). */
 bool lexer_peek_is(const Lexer *lx, const char *word);
 
-/* Print `FILE:LINE:COL: message` for the current line; returns false. */
+/* Print `FILE:LINE:COL: message` for the current line (unless quiet);
+ * returns false. */
 bool lexer_fail(const Lexer *lx, int col, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
 

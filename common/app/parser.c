@@ -3,8 +3,8 @@
  * are found through a hash table; a material may be defined after its first
  * use (those references are resolved at the end). Introduced in step 02. */
 #include "app/parser.h"
+#include "app/parser_state.h"
 
-#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -12,32 +12,15 @@
 #include "film.h"
 #include "app/bounds.h"
 #include "app/light_statement.h"
-#include "app/names.h"
-#include "app/textfile.h"
 
-/* Statements that may appear once per file. */
-enum { ONCE_FILM, ONCE_CAMERA, ONCE_AMBIENT, ONCE_BACKGROUND, ONCE_SAMPLES,
-       ONCE_LIGHT_SAMPLES, ONCE_COUNT };
-
-/* A shape whose material was not defined yet where it was named. */
-typedef struct Pending {
-  int instance, line, col;
-  char name[MATERIAL_NAME_MAX];
-} Pending;
-
-typedef struct Parser {
-  Lexer lx;
-  Scene *scene;
-  Names names;       /* material name -> index into scene->materials */
-  Pending *pending;  /* in file order */
-  int n_pending;
-  int once_line[ONCE_COUNT];
-} Parser;
+NameRecords parser_materials(const Scene *scene)
+{
+  return (NameRecords){scene->materials ? scene->materials[0].name : "", sizeof(Material)};
+}
 
 static NameRecords materials(const Parser *p)
 {
-  return (NameRecords){p->scene->materials ? p->scene->materials[0].name : "",
-                       sizeof(Material)};
+  return parser_materials(p->scene);
 }
 
 static bool once(Parser *p, int which, const char *word)
@@ -145,6 +128,21 @@ static bool st_material(Parser *p)
          names_add(&p->names, materials(p), p->scene->n_materials - 1);
 }
 
+bool parser_pending_add(Parser *p, const Pending *r)
+{
+  if ((p->n_pending & (p->n_pending - 1)) == 0) {
+    Pending *bigger = realloc(p->pending, sizeof *bigger *
+                              (size_t)(p->n_pending ? 2 * p->n_pending : 4));
+    if (!bigger) {
+      fprintf(stderr, "parser: out of memory\n");
+      return false;
+    }
+    p->pending = bigger;
+  }
+  p->pending[p->n_pending++] = *r;
+  return true;
+}
+
 /* Add a lit instance; a material not defined yet is resolved at the end. */
 static bool add_shape(Parser *p, Instance *inst, const Field *material)
 {
@@ -153,18 +151,10 @@ static bool add_shape(Parser *p, Instance *inst, const Field *material)
   inst->light = -1;
   if (inst->material < 0) {
     inst->material = 0;
-    if ((p->n_pending & (p->n_pending - 1)) == 0) {
-      Pending *bigger = realloc(p->pending, sizeof *bigger *
-                                (size_t)(p->n_pending ? 2 * p->n_pending : 4));
-      if (!bigger) {
-        fprintf(stderr, "parser: out of memory\n");
-        return false;
-      }
-      p->pending = bigger;
-    }
-    Pending *r = &p->pending[p->n_pending++];
-    *r = (Pending){p->scene->n_instances, p->lx.line, name->col, ""};
-    memcpy(r->name, name->s, (size_t)name->len);
+    Pending r = {p->scene->n_instances, p->lx.line, name->col, ""};
+    memcpy(r.name, name->s, (size_t)name->len);
+    if (!parser_pending_add(p, &r))
+      return false;
   }
   return scene_add_instance(p->scene, inst);
 }
@@ -222,7 +212,7 @@ static bool statement(Parser *p)
 }
 
 /* The references to materials defined after their use, in file order. */
-static bool resolve_pending(Parser *p)
+bool parser_resolve(Parser *p)
 {
   Scene *s = p->scene;
   for (int k = 0; k < p->n_pending; k++) {
@@ -249,49 +239,26 @@ static bool resolve_pending(Parser *p)
   return true;
 }
 
-bool parser_load_text(const char *file, const char *text, size_t len, Scene *scene)
+void parser_begin(Parser *p, const char *file, const char *text, size_t len, Scene *scene)
 {
-  if (len > PARSER_MAX_BYTES) {
-    fprintf(stderr, "%s: expected at most %zu bytes, found %zu\n", file,
-            PARSER_MAX_BYTES, len);
-    scene_free(scene);
-    return false;
-  }
-  Parser p = {.scene = scene};
-  names_init(&p.names);
-  lexer_init(&p.lx, file, text, len);
+  *p = (Parser){.scene = scene};
+  names_init(&p->names);
+  lexer_init(&p->lx, file, text, len);
+}
+
+bool parser_statements(Parser *p)
+{
   int more;
-  bool ok = true;
-  while (ok && (more = lexer_line(&p.lx)) != 0)
-    ok = more > 0 && statement(&p);
-  ok = ok && resolve_pending(&p);
-  free(p.pending);
-  names_free(&p.names);
-  if (!ok)
-    scene_free(scene);
-  return ok;
+  while ((more = lexer_line(&p->lx)) != 0)
+    if (more < 0 || !statement(p))
+      return false;
+  return true;
 }
 
-bool parser_load_string(const char *file, const char *text, Scene *scene)
+void parser_end(Parser *p)
 {
-  return parser_load_text(file, text, strlen(text), scene);
-}
-
-bool parser_load_file(const char *path, Scene *scene)
-{
-  char *text;
-  size_t len;
-  int err = textfile_read(path, PARSER_MAX_BYTES, &text, &len);
-  if (err == EFBIG)
-    fprintf(stderr, "parser: cannot read '%s': larger than %zu bytes, the limit of a "
-            "scene file\n", path, PARSER_MAX_BYTES);
-  else if (err)
-    fprintf(stderr, "parser: cannot read '%s': %s\n", path, strerror(err));
-  if (err) {
-    scene_free(scene);
-    return false;
-  }
-  bool ok = parser_load_text(path, text, len, scene);
-  free(text);
-  return ok;
+  free(p->pending);
+  names_free(&p->names);
+  p->pending = NULL;
+  p->n_pending = 0;
 }
