@@ -404,7 +404,7 @@ Test(parser, counts_in_range)
 
 Test(parser, bytes_that_are_not_text)
 {
-  ERRORS("docs/scene-format.md, \"The file itself\"",
+  ERRORS("docs/scene-format.md, \"Errors\"",
     {"film 10 10\nfilm\x01 10 10\n", "t.scene:2:5: expected text, found the control byte 0x01", 0},
     {"film 10 10\nfilm 1\0 10\n", "t.scene:2:7: expected text, found the control byte 0x00", 22},
     /* A NUL byte is refused even in a comment. */
@@ -438,7 +438,7 @@ static void expect_file_error(const char *path, const char *message)
   size_t n = fread(buf, 1, sizeof buf - 1, tmp);
   buf[n] = '\0';
   fclose(tmp);
-  Check c = CHECK("parser_load_file", "docs/scene-format.md, \"The file itself\"");
+  Check c = CHECK("parser_load_file", "docs/scene-format.md, \"Errors\"");
   CHECK_THAT(&c, !ok, "reading '%s' must fail", path);
   CHECK_THAT(&c, strcmp(buf, message) == 0, "reading '%s'\n  expected stderr  %s  got "
              "stderr       %s", path, message, buf);
