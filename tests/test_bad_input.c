@@ -10,6 +10,7 @@
  * NAME.scene must be the one this suite expects. */
 #define _DEFAULT_SOURCE /* realpath */
 #include "check.h"
+#include "testfiles.h"
 
 #include <dirent.h>
 #include <fcntl.h>
@@ -36,23 +37,6 @@
 #define SCENES "tests/bad/scenes"
 #define WORK BUILD_DIR "/test-out/bad"
 #define OLD "an existing output, not a picture\n"
-
-/* The whole file, NUL-terminated; its length in *n. NULL when unreadable. */
-static char *slurp(const char *path, size_t *n)
-{
-  FILE *f = fopen(path, "rb");
-  if (!f)
-    return NULL;
-  fseek(f, 0, SEEK_END);
-  long size = ftell(f);
-  rewind(f);
-  char *buf = malloc((size_t)size + 1);
-  *n = buf ? fread(buf, 1, (size_t)size, f) : 0;
-  if (buf)
-    buf[*n] = '\0';
-  fclose(f);
-  return buf;
-}
 
 static void write_text(const char *path, const char *text)
 {
@@ -131,18 +115,6 @@ static Run run(const char *dir, const char *args, rlim_t limit_as)
   return r;
 }
 
-/* Files of WORK whose name starts with `prefix`. */
-static int count_files(const char *prefix)
-{
-  DIR *d = opendir(WORK);
-  int n = 0;
-  for (struct dirent *e; d && (e = readdir(d));)
-    n += strncmp(e->d_name, prefix, strlen(prefix)) == 0;
-  if (d)
-    closedir(d);
-  return n;
-}
-
 /* One case: run, compare status and stderr, and after a failure the output
  * file and the folder it is in. */
 static void check_case(Check *c, const char *name, const char *dir, const char *args,
@@ -161,11 +133,11 @@ static void check_case(Check *c, const char *name, const char *dir, const char *
              "%s: %s\n  expected exit %d, stderr\n%s  got exit %d, stderr\n%s", name, a,
              want_status, w, r.status, r.err);
   if (want_status != 0) {
-    size_t n;
-    char *now = slurp(out, &n);
+    long n;
+    char *now = testfiles_slurp(out, &n);
     CHECK_THAT(c, now && strcmp(now, OLD) == 0, "%s: the existing output file was changed",
                name);
-    CHECK_INT(c, 0, count_files(tmp), "%s: temporary files left", name);
+    CHECK_INT(c, 0, testfiles_count(WORK, tmp), "%s: temporary files left", name);
     free(now);
   }
   free(a);
@@ -223,8 +195,8 @@ Test(bad_input, every_scene_case, .timeout = 900) /* hang guard; valgrind: ~150 
   for (int k = 0; k < n; k++) {
     char path[PATH_MAX], args[PATH_MAX + 256];
     snprintf(path, sizeof path, SCENES "/%s.err", names[k]);
-    size_t len;
-    char *expect = slurp(path, &len);
+    long len;
+    char *expect = testfiles_slurp(path, &len);
     CHECK_THAT(&c, expect != NULL, "%s.scene has no %s.err", names[k], names[k]);
     if (expect) {
       int status;
@@ -248,8 +220,8 @@ Test(bad_input, every_command_line_case, .timeout = 900)
   mkdir(WORK, 0755);
   mkdir(WORK "/dir.png", 0755);
   Check c = CHECK(REL_STEP, DOC);
-  size_t len;
-  char *text = slurp("tests/bad/cli.cases", &len);
+  long len;
+  char *text = testfiles_slurp("tests/bad/cli.cases", &len);
   cr_assert(text, "no tests/bad/cli.cases");
   int cases = 0;
   for (char *rec = text; *rec;) {
@@ -381,8 +353,8 @@ Test(bad_input, files_too_large_to_read)
  * suite's expected stderr for tests/bad/scenes/NAME.scene. */
 Test(bad_input, the_documented_messages_are_the_real_ones)
 {
-  size_t len;
-  char *doc = slurp("docs/scene-format.md", &len);
+  long len;
+  char *doc = testfiles_slurp("docs/scene-format.md", &len);
   cr_assert(doc, "no docs/scene-format.md");
   Check c = CHECK("docs/scene-format.md", "docs/scene-format.md, \"Errors\"");
   int found = 0;
@@ -393,8 +365,8 @@ Test(bad_input, the_documented_messages_are_the_real_ones)
       continue;
     char path[256];
     snprintf(path, sizeof path, SCENES "/%s.err", name);
-    size_t elen;
-    char *expect = slurp(path, &elen);
+    long elen;
+    char *expect = testfiles_slurp(path, &elen);
     found++;
     CHECK_THAT(&c, expect && strstr(expect, line) != NULL, "the doc shows\n    %s\n  but "
                "%s holds\n%s", line, path, expect ? expect : "(no such file)\n");

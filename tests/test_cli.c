@@ -3,6 +3,7 @@
  * and the thread count never changes the bytes. README.md, "Running a step";
  * every bad command line of tests/bad/cli.cases runs in the bad-input suite. */
 #include "check.h"
+#include "testfiles.h"
 
 #include <stdlib.h>
 #include <sys/stat.h>
@@ -17,26 +18,6 @@ static int run(const char *cmd)
 {
   int status = system(cmd);
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
-/* The whole file into a new buffer; its length in *n. NULL when unreadable. */
-static char *slurp(const char *path, long *n)
-{
-  FILE *f = fopen(path, "rb");
-  if (!f)
-    return NULL;
-  fseek(f, 0, SEEK_END);
-  *n = ftell(f);
-  rewind(f);
-  char *buf = malloc((size_t)*n + 1);
-  if (buf && fread(buf, 1, (size_t)*n, f) != (size_t)*n) {
-    free(buf);
-    buf = NULL;
-  }
-  if (buf)
-    buf[*n] = '\0';
-  fclose(f);
-  return buf;
 }
 
 static void write_file(const char *path, const char *text)
@@ -96,15 +77,15 @@ Test(cli, bad_scene_reports_file_line_col_and_keeps_the_output)
   Check c = CHECK("app_run", DOC);
   int rc = run(BIN " --quiet --scene " OUT "bad.scene -o " OUT "keep.png 2> " OUT "bad.err");
   CHECK_INT(&c, 1, rc, "a scene with radius -1: exit status (1: bad scene)");
-  long n;
-  char *msg = slurp(OUT "bad.err", &n);
+  long n = 0;
+  char *msg = testfiles_slurp(OUT "bad.err", &n);
   cr_assert(msg, "no stderr file " OUT "bad.err");
   /* Line 2, column 28: the value after 'radius'. */
   const char *want = OUT "bad.scene:2:28: expected a radius > 0, found '-1'\n";
   CHECK_THAT(&c, strcmp(msg, want) == 0, "a scene with radius -1 on line 2\n  expected "
              "stderr %s  got stderr      %s", want, msg);
   free(msg);
-  char *now = slurp(OUT "keep.png", &n);
+  char *now = testfiles_slurp(OUT "keep.png", &n);
   cr_assert(now, "the existing output " OUT "keep.png is gone");
   CHECK_THAT(&c, n == (long)sizeof old - 1 && memcmp(now, old, sizeof old - 1) == 0,
              "after the failed run, the existing output was changed");
@@ -124,9 +105,9 @@ Test(cli, thread_count_does_not_change_the_bytes, .timeout = 120)
     CHECK_INT(&c, 0, run(cmd), "161 x 97 with %s threads to %s: exit status", runs[k][0],
               runs[k][1]);
   }
-  long n1, n2, n3, n4;
-  char *a = slurp(OUT "t1.png", &n1), *b = slurp(OUT "t2.png", &n2);
-  char *p = slurp(OUT "t2.pfm", &n3), *q = slurp(OUT "t3.pfm", &n4);
+  long n1 = 0, n2 = 0, n3 = 0, n4 = 0;
+  char *a = testfiles_slurp(OUT "t1.png", &n1), *b = testfiles_slurp(OUT "t2.png", &n2);
+  char *p = testfiles_slurp(OUT "t2.pfm", &n3), *q = testfiles_slurp(OUT "t3.pfm", &n4);
   cr_assert(a && b && p && q, "a render of the test wrote no file");
   CHECK_THAT(&c, n1 == n2 && memcmp(a, b, (size_t)n1) == 0,
              "the PNG differs between 1 and 2 threads (%ld and %ld bytes)", n1, n2);

@@ -3,6 +3,7 @@
  * write leaves neither a temporary file nor a changed output, and a failed
  * PNG write says one line of its own. docs/reliability.md, "Output files". */
 #include "check.h"
+#include "testfiles.h"
 
 #include <dirent.h>
 #include <signal.h>
@@ -37,18 +38,6 @@ static bool holds(const char *path, const char *text)
   if (f)
     fclose(f);
   return n == strlen(text) && memcmp(buf, text, n) == 0;
-}
-
-/* Files in DIR_ whose name starts with `prefix`. */
-static int count_files(const char *prefix)
-{
-  DIR *d = opendir(DIR_);
-  int n = 0;
-  for (struct dirent *e; d && (e = readdir(d));)
-    n += strncmp(e->d_name, prefix, strlen(prefix)) == 0;
-  if (d)
-    closedir(d);
-  return n;
 }
 
 static mode_t mode_of(const char *path)
@@ -108,7 +97,7 @@ static void killed_while_writing(Check *c, int sig, const char *name)
   waitpid(pid, &status, 0);
   CHECK_THAT(c, WIFSIGNALED(status) && WTERMSIG(status) == sig, "%s while writing: the "
              "program must die of it (status 0x%x)", name, (unsigned)status);
-  CHECK_INT(c, 0, count_files("sig.pfm.tmp"), "%s while writing: temporary files left", name);
+  CHECK_INT(c, 0, testfiles_count(DIR_, "sig.pfm.tmp"), "%s while writing: temporary files left", name);
   CHECK_THAT(c, holds(DIR_ "/sig.pfm", OLD), "%s while writing: the old file was changed",
              name);
 }
@@ -173,7 +162,7 @@ Test(outfile, a_file_size_limit_ends_the_program_without_a_trace)
   waitpid(pid, &status, 0);
   CHECK_THAT(&c, WIFSIGNALED(status) && WTERMSIG(status) == SIGXFSZ, "over the file size "
              "limit: the program must die of SIGXFSZ (status 0x%x)", (unsigned)status);
-  CHECK_INT(&c, 0, count_files("big.png.tmp"), "over the file size limit: temporary files left");
+  CHECK_INT(&c, 0, testfiles_count(DIR_, "big.png.tmp"), "over the file size limit: temporary files left");
   CHECK_THAT(&c, holds(DIR_ "/big.png", OLD), "over the file size limit: the old file changed");
   free(rgb);
 }
