@@ -20,7 +20,7 @@ FUZZ_SAN     := -fsanitize=address,undefined,float-cast-overflow,float-divide-by
                 -fno-sanitize-recover=all
 FUZZ_CFLAGS   = -std=c11 -O1 -g -fno-omit-frame-pointer -fopenmp -ffp-contract=off \
                 -fno-math-errno -D_POSIX_C_SOURCE=200809L -Wall -Wextra -Wpedantic \
-                -Wshadow -Wstrict-prototypes -Wmissing-prototypes -Werror -Icommon \
+                -Wshadow -Wstrict-prototypes -Wmissing-prototypes -Werror -MMD -MP -Icommon \
                 -Itests/fuzz $(FUZZ_SAN) $(PKG_CFLAGS)
 FUZZ_STEP    := steps/08-area-lights
 # Step 08's main, renamed: its app_run call hands the step's description to
@@ -77,6 +77,8 @@ $(FUZZ_TARGETS:%=fuzz-%): fuzz-%: $(FUZZ_BUILD)/fuzz-% $(FUZZ_BUILD)/seeds/%
 
 fuzz: $(FUZZ_TARGETS:%=fuzz-%)
 fuzz-build: $(FUZZ_TARGETS:%=$(FUZZ_BUILD)/fuzz-%)
+
+-include $(shell find $(FUZZ_BUILD)/obj -name '*.d' 2>/dev/null)
 
 FORCE:
 .SECONDARY: $(FUZZ_LIB_OBJ) $(FUZZ_TARGETS:%=$(FUZZ_BUILD)/obj/entry-%.o)
