@@ -76,16 +76,16 @@ VG_FLAGS := --trace-children=yes --error-exitcode=99 --leak-check=full \
             --show-leak-kinds=definite --errors-for-leak-kinds=definite \
             --suppressions=$(CURDIR)/tests/valgrind.supp \
             --log-file=$(CURDIR)/$(VG_BUILD)/valgrind/%p.log
+# Every test binary of make test, built in VG_BUILD.
+VG_TESTBIN = $(patsubst $(BUILD)/%,$(VG_BUILD)/%,$(TESTBIN) $(STRESSBIN) $(TRACE_TESTBIN))
 valgrind-deps:
 	@$(call need_debs,valgrind)
 valgrind: valgrind-deps
 	$(MAKE) BUILD=$(VG_BUILD) OPT='-O3 -march=x86-64-v3 -flto=auto -ffat-lto-objects' \
-	  $(VG_BUILD)/tests/stress $(VG_BUILD)/bin/mistakes \
-	  $(PRESENT:%=$(VG_BUILD)/tests/%) $(VG_BUILD)/tests/reliability
+	  $(VG_TESTBIN) $(VG_BUILD)/bin/mistakes $(VG_BUILD)/bin/04-phong
 	@rm -rf $(VG_BUILD)/valgrind && mkdir -p $(VG_BUILD)/valgrind
 	@VALGRIND='valgrind $(VG_FLAGS)' CRITERION_TEST_PATTERN='$(VG_SKIP)' \
-	  tests/run.sh $(PRESENT:%=$(VG_BUILD)/tests/%) $(VG_BUILD)/tests/reliability \
-	  $(VG_BUILD)/tests/stress; rc=$$?; \
+	  tests/run.sh $(VG_TESTBIN); rc=$$?; \
 	  bad=$$(grep -l 'ERROR SUMMARY: [1-9]' $(VG_BUILD)/valgrind/*.log | wc -l); \
 	  echo "valgrind: $$(ls $(VG_BUILD)/valgrind | wc -l) processes, $$bad with errors"; \
 	  [ $$rc -eq 0 ] && [ $$bad -eq 0 ]
