@@ -57,9 +57,12 @@ LDLIBS  := -fopenmp -lpng -lstb -lm
 # keeps both warnings.
 LDFLAGS := -Wno-maybe-uninitialized -Wno-uninitialized
 SAN ?=
+# Any report ends the program, so a test that meets one fails. The clang
+# build of make sanitize passes its fuller set (mk/reliability.mk).
+SAN_FLAGS ?= -fsanitize=address,undefined -fno-sanitize-recover=all
 ifneq ($(SAN),)
-  CFLAGS  += -fsanitize=address,undefined -fno-omit-frame-pointer
-  LDLIBS  += -fsanitize=address,undefined
+  CFLAGS  += $(SAN_FLAGS) -fno-omit-frame-pointer
+  LDLIBS  += $(SAN_FLAGS)
 endif
 
 # ---------------------------------------------------------------- dependencies
@@ -136,7 +139,7 @@ $(1)_TOBJ := $$(patsubst %,$(BUILD)/obj/tests/$(1)/test_%.o,$$(TESTS_$(1))) \
 $(BUILD)/obj/tests/$(1)/%.o: tests/%.c | $(BUILD)/.deps
 	@mkdir -p $$(@D)
 	@echo "CC $$<  ($(1) test)"
-	@$(CC) $(CFLAGS) $(PKG_CFLAGS) -Isteps/$(1) -Itests \
+	@$(CC) $(CFLAGS) $$(PKG_CFLAGS) -Isteps/$(1) -Itests \
 	  -DSTEP_NAME='"$(1)"' -DBUILD_DIR='"$(BUILD)"' -c $$< -o $$@
 $(BUILD)/tests/$(1): $$($(1)_TOBJ) $$($(1)_LIB) $(LIBCOMMON) $(BUILD)/bin/$(1)
 	@mkdir -p $$(@D)
@@ -195,6 +198,7 @@ test-step:
 
 sanitize:
 	$(MAKE) BUILD=build/san SAN=1 OPT=-O1 test
+	$(MAKE) sanitize-clang
 
 # ---------------------------------------------------------------- images, diffs
 # Reference images: each step's default scene at the reference size, with the
@@ -242,7 +246,10 @@ help:
 	@echo "make test         run every unit, stress and image test"
 	@echo "make test-step N  run step N's unit tests and image test (N = 1 .. 8)"
 	@echo "make stress       run the numerical stress tests alone"
-	@echo "make sanitize     run the whole suite under AddressSanitizer + UBSan"
+	@echo "make sanitize     run the whole suite under AddressSanitizer + UBSan, gcc's then clang's"
+	@echo "make valgrind     run the whole suite under valgrind (an x86-64-v3 build in build/vg)"
+	@echo "make fuzz         fuzz the scene reader, the command line and a render, FUZZ_SECONDS each"
+	@echo "make test-reliability  the bad-input suite, the number reader, output files, fuzz corpus"
 	@echo "make bench        measure speed and error, write docs/benchmarks.md"
 	@echo "make bench-accuracy  time step 05's frame, robust vs textbook geometry (docs/accuracy.md)"
 	@echo "make images       regenerate the reference images in images/ (on purpose only)"

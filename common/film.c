@@ -110,6 +110,11 @@ unsigned char film_to_byte(float c, Tonemap tm)
 static void accum1(float *sum, float *comp, float x)
 {
   float s = *sum + x;
+  if (!isfinite(s)) { /* an overflowing sum stays infinite (inf - inf would be NaN) */
+    *sum = s;
+    *comp = 0.0f;
+    return;
+  }
   float bp = s - *sum;
   float e = (*sum - (s - bp)) + (x - bp); /* s + e == sum + x exactly */
   float c = *comp + e;

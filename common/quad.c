@@ -7,14 +7,16 @@ Quad quad_make(vec3s corner, vec3s edge1, vec3s edge2)
   vec3s cross = glms_vec3_cross(edge1, edge2);
   Quad q = {.corner = corner, .edge1 = edge1, .edge2 = edge2};
   q.area = glms_vec3_norm(cross);
-  q.normal = glms_vec3_scale(cross, 1.0f / q.area);
+  q.normal = q.area > 0.0f ? glms_vec3_scale(cross, 1.0f / q.area) : glms_vec3_zero();
   return q;
 }
 
 float quad_hit_t(const Quad *q, Ray r, float tmax)
 {
-  float t = glms_vec3_dot(glms_vec3_sub(q->corner, r.o), q->normal) /
-            glms_vec3_dot(r.d, q->normal);
+  float d_n = glms_vec3_dot(r.d, q->normal);
+  if (d_n == 0.0f) /* parallel to the light: x / 0 would be rejected below too */
+    return INFINITY;
+  float t = glms_vec3_dot(glms_vec3_sub(q->corner, r.o), q->normal) / d_n;
   if (!(t > 0.0f && t < tmax))
     return INFINITY;
   /* Parameters of the hit: rel = a e1 + b e2, so rel x e2 = a (e1 x e2) and

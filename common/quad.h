@@ -12,7 +12,8 @@ typedef struct Quad {
   float area;   /* |edge1 x edge2| */
 } Quad;
 
-/* The parallelogram; edges must not be parallel (area > 0). */
+/* The parallelogram; edges must not be parallel (area > 0). When the area
+ * comes out 0 in float, the normal is 0 (the parser refuses such a light). */
 Quad quad_make(vec3s corner, vec3s edge1, vec3s edge2);
 
 /* Distance to the intersection with t in (0, tmax), or INFINITY. Both sides

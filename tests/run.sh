@@ -8,6 +8,7 @@
 #              (make test-step N); without it, failures only, and per binary
 #              either one PASS line or its failing checks' lines (make test).
 # Exit status: 0 when every test of every binary passed, 1 otherwise.
+# VALGRIND, when set, is the command each binary runs under (make valgrind).
 #
 # A check is a Criterion suite: the unit tests of one module (`sphere`), the
 # image test (suite `reference_image`), or a saving a doc asks for (suite
@@ -183,7 +184,7 @@ for bin in "$@"; do
   [ "$verbose" = 1 ] && args+=(--verbose)
   # Criterion's own synthesis line comes last, over all binaries; the line
   # about the TAP report is noise to a student.
-  "$bin" "${args[@]}" 2>&1 | grep -v -e 'Synthesis: Tested:' -e 'Writing tap report'
+  ${VALGRIND:-} "$bin" "${args[@]}" 2>&1 | grep -v -e 'Synthesis: Tested:' -e 'Writing tap report'
   rc=${PIPESTATUS[0]}
   [ "$verbose" = 1 ] && echo
   if [ ! -s "$tap" ] || ! grep -q '^1\.\.' "$tap"; then

@@ -319,8 +319,9 @@ Test(saving, no_shadow_ray_behind_the_surface)
   add_directional(&s, vec_make(0.0f, 1.0f, 0.0f), vec_make(1.0f, 1.0f, 1.0f));     /* upward */
   prepare(&s);
   Hit h = floor_hit(&s, 0.0f, 0.0f);
-  const char *what[] = {"a point light below the surface", "a point light in its tangent plane "
-                        "(n.l = 0)", "a directional light shining upward"};
+  const char *what[] = {"a point light below the surface",
+                        "a point light in its tangent plane (n.l = 0)",
+                        "a directional light shining upward"};
   Check c = CHECK("shade_incident, shade_visible", "docs/05-shadows.md, \"What you write\"");
   for (int k = 0; k < 3; k++) {
     uint64_t rays;

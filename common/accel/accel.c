@@ -78,9 +78,16 @@ static float box_enter(const BvhNode *nd, vec3s o, vec3s inv_d, float tmax)
   return t_in <= t_out ? t_in : NAN;
 }
 
+/* 1 / d per axis; a zero component gives the infinity of its sign (what IEEE
+ * division gives, written out so that no division by zero is performed). */
+static float inverse(float x)
+{
+  return x != 0.0f ? 1.0f / x : copysignf(INFINITY, x);
+}
+
 static vec3s inverse_dir(vec3s d)
 {
-  return vec_make(1.0f / d.x, 1.0f / d.y, 1.0f / d.z);
+  return vec_make(inverse(d.x), inverse(d.y), inverse(d.z));
 }
 
 /* Nearer child first; a box entered beyond the best distance is skipped (<=:
@@ -215,7 +222,7 @@ static bool build_tree(Accel *acc, const Scene *scene, const int *ids, int n, bo
   for (int k = 0; k < n; k++)
     acc->spheres[k] = ids[acc->spheres[k]];
   for (int k = 0; k < bvh.n_nodes; k++)
-    if (bvh.nodes[k].meta > 0)
+    if (bvh.nodes[k].meta > 1)
       qsort(acc->spheres + bvh.nodes[k].index, (size_t)bvh.nodes[k].meta, sizeof(int),
             compare_int);
   acc->nodes = bvh.nodes;

@@ -2,6 +2,7 @@
  * scene, render, save, summary. README.md describes the command line. */
 #include "app/app.h"
 
+#include <omp.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -153,6 +154,8 @@ int app_run(int argc, char **argv, const Step *step)
   case CLI_USAGE: return 2;
   case CLI_RUN: break;
   }
+  if (o.threads > 0) /* the parse and the hierarchy's build use threads too */
+    omp_set_num_threads(o.threads);
   if ((o.out_path && o.trace_x < 0 && !image_format_known(o.out_path)) ||
       !aov_usable(step, &o))
     return 2;

@@ -2,6 +2,7 @@
  * says which ones it ignores. README.md lists them. */
 #include "app/cli.h"
 
+#include <ctype.h>
 #include <errno.h>
 #include <limits.h>
 #include <math.h>
@@ -58,7 +59,7 @@ static bool parse_int(const char *prog, const char *opt, const char *s, long lo,
   char *end;
   errno = 0;
   long v = strtol(s, &end, 10);
-  if (end == s || *end || errno || v < lo || v > hi) {
+  if (end == s || *end || errno || v < lo || v > hi || isspace((unsigned char)*s)) {
     char want[64];
     snprintf(want, sizeof want, "a whole number from %ld to %ld", lo, hi);
     return bad(prog, opt, s, want);
@@ -170,7 +171,11 @@ CliResult cli_parse(int argc, char **argv, const char *prog, const char *summary
       fprintf(stderr, "%s: unexpected argument '%s' (try --help)\n", prog, arg);
       return CLI_USAGE;
     }
-    if (eq && !strncmp(arg, "--", 2) && eq - arg < (long)sizeof opt) {
+    if (eq && !strncmp(arg, "--", 2) && eq - arg >= (long)sizeof opt) {
+      fprintf(stderr, "%s: unknown option '%.*s' (try --help)\n", prog, (int)(eq - arg), arg);
+      return CLI_USAGE;
+    }
+    if (eq && !strncmp(arg, "--", 2)) {
       snprintf(opt, sizeof opt, "%.*s", (int)(eq - arg), arg);
       val = eq + 1;
     } else {

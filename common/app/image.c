@@ -4,6 +4,7 @@
 #include "app/image.h"
 
 #include "film.h"
+#include "app/outfile.h"
 
 #include <errno.h>
 #include <math.h>
@@ -11,8 +12,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 #include <png.h>
 #include <stb_image.h>
@@ -30,17 +29,14 @@ bool image_tonemap_parse(const char *name, Tonemap *out)
   return false;
 }
 
-/* Output file being written under a temporary name beside its final one. */
-typedef struct Out {
-  FILE *f;
-  bool failed;
-} Out;
-
+/* stb's write callback: a failed write is remembered with its reason. */
 static void out_write(void *ctx, void *data, int size)
 {
-  Out *out = ctx;
-  if (!out->failed && fwrite(data, 1, (size_t)size, out->f) != (size_t)size)
+  OutFile *out = ctx;
+  if (!out->failed && fwrite(data, 1, (size_t)size, out->f) != (size_t)size) {
     out->failed = true;
+    out->err = errno;
+  }
 }
 
 static const char *extension(const char *path)
@@ -78,7 +74,7 @@ static unsigned char *to_bytes(int w, int h, const float *rgb, Tonemap tm)
 /* PFM: header, then little-endian floats, bottom row first (the film's own
  * order). A negative scale says little-endian. One write of the whole body:
  * a write per float cost more than rendering a small picture. */
-static bool write_pfm(Out *out, int w, int h, const float *rgb)
+static bool write_pfm(OutFile *out, int w, int h, const float *rgb)
 {
   char head[64];
   int n = snprintf(head, sizeof head, "PF\n%d %d\n-1.0\n", w, h);
@@ -96,6 +92,20 @@ static bool write_pfm(Out *out, int w, int h, const float *rgb)
   out_write(out, le, (int)(count * 4));
   free(le);
   return true;
+}
+
+/* libpng's errors come back as a longjmp to png_rows, without libpng's own
+ * "libpng error: ..." line: image_save says what failed and why. */
+static void png_quiet_error(png_structp png, png_const_charp message)
+{
+  (void)message;
+  png_longjmp(png, 1);
+}
+
+static void png_quiet_warning(png_structp png, png_const_charp message)
+{
+  (void)png;
+  (void)message;
 }
 
 /* PNG rows through libpng (errors arrive by longjmp, hence the helper that
@@ -120,9 +130,10 @@ static bool png_rows(png_structp png, png_infop info, const Bytes *b,
   return true;
 }
 
-static bool write_png(Out *out, const Bytes *b)
+static bool write_png(OutFile *out, const Bytes *b)
 {
-  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, NULL, NULL, NULL);
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, NULL, png_quiet_error,
+                                            png_quiet_warning);
   png_infop info = png ? png_create_info_struct(png) : NULL;
   unsigned char *row = malloc((size_t)b->w * 3);
   bool ok = png && info && row;
@@ -136,7 +147,7 @@ static bool write_png(Out *out, const Bytes *b)
 }
 
 /* Encode into `out`; false when the format is unknown or memory is short. */
-static bool encode(Out *out, const char *ext, int w, int h, const float *rgb,
+static bool encode(OutFile *out, const char *ext, int w, int h, const float *rgb,
                    Tonemap tm)
 {
   if (strcmp(ext, "pfm") == 0)
@@ -169,50 +180,25 @@ bool image_format_known(const char *path)
   for (int k = 0; k < 5; k++)
     if (strcmp(ext, known[k]) == 0)
       return true;
-  fprintf(stderr, "image: cannot write '%s': unknown extension '.%s' "
-                  "(expected .png, .jpg, .hdr or .pfm)\n", path, ext);
+  if (*ext)
+    fprintf(stderr, "image: cannot write '%s': unknown extension '.%s' "
+                    "(expected .png, .jpg, .hdr or .pfm)\n", path, ext);
+  else
+    fprintf(stderr, "image: cannot write '%s': no extension "
+                    "(expected .png, .jpg, .hdr or .pfm)\n", path);
   return false;
 }
 
 bool image_save(const char *path, int w, int h, const float *rgb, Tonemap tm)
 {
-  const char *ext = extension(path);
-  if (!image_format_known(path))
+  OutFile out;
+  if (!image_format_known(path) || !outfile_open(&out, path))
     return false;
-  size_t len = strlen(path);
-  char *tmp = malloc(len + 16);
-  if (!tmp)
-    return false;
-  snprintf(tmp, len + 16, "%s.tmp.XXXXXX", path);
-  int fd = mkstemp(tmp);
-  Out out = {fd >= 0 ? fdopen(fd, "wb") : NULL, false};
-  if (!out.f) {
-    fprintf(stderr, "image: cannot write '%s': %s\n", path, strerror(errno));
-    if (fd >= 0) {
-      close(fd);
-      unlink(tmp);
-    }
-    free(tmp);
-    return false;
-  }
-  fchmod(fd, 0644);
   errno = 0;
-  bool ok = encode(&out, ext, w, h, rgb, tm) && !out.failed;
-  int saved_errno = errno ? errno : ENOMEM;
-  if (fclose(out.f) != 0 && ok) {
-    ok = false;
-    saved_errno = errno;
-  }
-  if (ok && rename(tmp, path) != 0) {
-    ok = false;
-    saved_errno = errno;
-  }
-  if (!ok) {
-    fprintf(stderr, "image: cannot write '%s': %s\n", path, strerror(saved_errno));
-    unlink(tmp);
-  }
-  free(tmp);
-  return ok;
+  bool ok = encode(&out, extension(path), w, h, rgb, tm);
+  if (!ok && !out.err)
+    out.err = errno ? errno : ENOMEM;
+  return outfile_close(&out, ok);
 }
 
 /* Read a PFM (either endianness, 1 or 3 channels) into RGB floats. */

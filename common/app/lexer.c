@@ -8,9 +8,13 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "app/number.h"
+
 /* Print `FILE:LINE:COL: message` and return false. */
 bool lexer_fail(const Lexer *lx, int col, const char *fmt, ...)
 {
+  if (lx->quiet)
+    return false;
   va_list ap;
   va_start(ap, fmt);
   fprintf(stderr, "%s:%d:%d: ", lx->file, lx->line, col);
@@ -20,33 +24,48 @@ bool lexer_fail(const Lexer *lx, int col, const char *fmt, ...)
   return false;
 }
 
-/* What the next token is, for messages: 'text' or "end of line". */
+/* Length of the UTF-8 sequence at s (at most n bytes) when it is valid and
+ * visible, 0 otherwise: invalid bytes, a byte-order mark, no-break and
+ * zero-width spaces would be invisible or garbled in a message. */
+static int visible_utf8(const unsigned char *s, int n)
+{
+  int len = s[0] >= 0xf0 ? 4 : s[0] >= 0xe0 ? 3 : s[0] >= 0xc2 ? 2 : 0;
+  if (len == 0 || len > n || s[0] > 0xf4)
+    return 0;
+  unsigned cp = s[0] & (0x7f >> len);
+  for (int k = 1; k < len; k++) {
+    if ((s[k] & 0xc0) != 0x80)
+      return 0;
+    cp = cp << 6 | (s[k] & 0x3f);
+  }
+  bool overlong = (len == 3 && cp < 0x800) || (len == 4 && (cp < 0x10000 || cp > 0x10ffff));
+  bool invisible = cp == 0xa0 || cp == 0xad || (cp >= 0x2000 && cp <= 0x200f) ||
+                   (cp >= 0x2028 && cp <= 0x202f) || cp == 0x2060 || cp == 0xfeff ||
+                   (cp >= 0xd800 && cp <= 0xdfff);
+  return overlong || invisible ? 0 : len;
+}
+
+/* What the next token is, for messages: 'text' (its first 40 bytes, bytes
+ * that would not show written \xNN) or "end of line". */
 static const char *found(const Lexer *lx, char *buf, size_t size)
 {
   if (lx->pos >= lx->n)
     return "end of line";
   const Token *t = &lx->tok[lx->pos];
-  snprintf(buf, size, "'%.*s'", t->len > 40 ? 40 : t->len, t->s);
+  const unsigned char *s = (const unsigned char *)t->s;
+  int n = t->len > 40 ? 40 : t->len;
+  size_t k = 0;
+  buf[k++] = '\'';
+  for (int i = 0; i < n && k + 6 < size;) {
+    int len = s[i] < 0x80 ? 1 : visible_utf8(s + i, n - i);
+    if (len == 0)
+      k += (size_t)snprintf(buf + k, size - k, "\\x%02x", s[i++]);
+    for (; len > 0; len--)
+      buf[k++] = (char)s[i++];
+  }
+  buf[k++] = '\'';
+  buf[k] = '\0';
   return buf;
-}
-
-/* The token's text into out (truncated to size - 1 bytes), as snprintf's
- * "%.*s" would write it: a scene of 10^6 spheres has 10^7 tokens, and
- * snprintf's formatting machinery cost a third of its parse time. */
-static void tok_copy(char *out, size_t size, const Token *t)
-{
-  size_t n = (size_t)t->len < size - 1 ? (size_t)t->len : size - 1;
-  memcpy(out, t->s, n);
-  out[n] = '\0';
-}
-
-/* Append s to the string in out, truncated as snprintf would. */
-static void append(char *out, size_t size, const char *s)
-{
-  size_t n = strlen(out);
-  while (*s && n + 1 < size)
-    out[n++] = *s++;
-  out[n] = '\0';
 }
 
 static int next_col(const Lexer *lx)
@@ -54,51 +73,90 @@ static int next_col(const Lexer *lx)
   return lx->pos < lx->n ? lx->tok[lx->pos].col : lx->end_col;
 }
 
-static bool tok_is(const Token *t, const char *word)
+bool lexer_is(const Token *t, const char *word)
 {
-  return (int)strlen(word) == t->len && strncmp(t->s, word, (size_t)t->len) == 0;
+  int k = 0; /* stops at word's NUL too: a token holds no NUL */
+  while (k < t->len && t->s[k] == word[k])
+    k++;
+  return k == t->len && word[k] == '\0';
 }
 
-void lexer_init(Lexer *lx, const char *file, const char *text)
+void lexer_init(Lexer *lx, const char *file, const char *text, size_t len)
 {
   memset(lx, 0, sizeof *lx);
   lx->file = file;
   lx->next = text;
+  lx->end = text + len;
+}
+
+void lexer_skip_bom(Lexer *lx)
+{
+  if (lx->end - lx->next >= 3 && memcmp(lx->next, "\xef\xbb\xbf", 3) == 0)
+    lx->next += 3;
+}
+
+/* A byte that belongs to a word: printable, not '#' (bytes >= 128 too, for
+ * messages that quote them). */
+static bool word_byte(unsigned char c)
+{
+  return c > ' ' && c != '#' && c != 127;
+}
+
+static bool space_byte(unsigned char c)
+{
+  return c == ' ' || c == '\t' || c == '\r';
+}
+
+/* Skip a comment to the end of its line; a NUL byte in it is still refused. */
+static const char *skip_comment(const Lexer *lx, const char *line, const char *s)
+{
+  for (; s < lx->end && *s != '\n'; s++)
+    if (*s == '\0')
+      return lexer_fail(lx, (int)(s - line) + 1, "expected text, found the control "
+                        "byte 0x00"), NULL;
+  return s;
+}
+
+/* Split the line starting at `line` into lx->tok; returns its end (the '\n'
+ * or the end of the text), NULL after an error. */
+static const char *split(Lexer *lx, const char *line)
+{
+  const char *s = line, *end = lx->end;
+  for (;;) {
+    while (s < end && space_byte((unsigned char)*s))
+      s++;
+    if (s == end || *s == '\n')
+      return s;
+    int col = (int)(s - line) + 1;
+    if (*s == '#')
+      return skip_comment(lx, line, s);
+    if (!word_byte((unsigned char)*s))
+      return lexer_fail(lx, col, "expected text, found the control byte 0x%02x",
+                        (unsigned char)*s), NULL;
+    if (lx->n == LEXER_MAX_TOKENS)
+      return lexer_fail(lx, col, "expected at most %d words on a line, found more",
+                        LEXER_MAX_TOKENS), NULL;
+    const char *w = s, *stop = end - w > LEXER_TOKEN_MAX ? w + LEXER_TOKEN_MAX : end;
+    while (s < stop && word_byte((unsigned char)*s))
+      s++;
+    if (s - w == LEXER_TOKEN_MAX)
+      return lexer_fail(lx, col, "expected a word of at most %d characters, found a "
+                        "longer one", LEXER_TOKEN_MAX - 1), NULL;
+    lx->tok[lx->n++] = (Token){w, (int)(s - w), col};
+    lx->end_col = (int)(s - line) + 1;
+  }
 }
 
 int lexer_line(Lexer *lx)
 {
-  while (*lx->next) {
-    const char *s = lx->next;
+  while (lx->next < lx->end) {
+    const char *line = lx->next;
     lx->line++;
     lx->n = lx->pos = 0;
-    bool comment = false;
-    int col = 1;
-    for (; *s && *s != '\n'; s++, col++) {
-      unsigned char c = (unsigned char)*s;
-      bool space = c == ' ' || c == '\t' || c == '\r';
-      if (c == '#')
-        comment = true;
-      if (comment)
-        continue;
-      if (!space && (c < 32 || c == 127))
-        return lexer_fail(lx, col, "expected text, found the control byte 0x%02x", c) - 1;
-      bool starts = !space && (col == 1 || s[-1] == ' ' || s[-1] == '\t' || s[-1] == '\r');
-      if (starts) {
-        if (lx->n == LEXER_MAX_TOKENS)
-          return lexer_fail(lx, col, "expected at most %d words on a line, found more",
-                            LEXER_MAX_TOKENS) - 1;
-        lx->tok[lx->n++] = (Token){s, 0, col};
-      }
-      if (!space) {
-        Token *t = &lx->tok[lx->n - 1];
-        if (++t->len == LEXER_TOKEN_MAX)
-          return lexer_fail(lx, t->col, "expected a word of at most %d characters, "
-                            "found a longer one", LEXER_TOKEN_MAX - 1) - 1;
-        lx->end_col = col + 1;
-      }
-    }
-    lx->next = *s ? s + 1 : s;
+    const char *s = split(lx, line);
+    if (!s)
+      return -1;
+    lx->next = s < lx->end ? s + 1 : s;
     if (lx->n > 0)
       return 1;
   }
@@ -107,7 +165,7 @@ int lexer_line(Lexer *lx)
 
 bool lexer_peek_is(const Lexer *lx, const char *word)
 {
-  return lx->pos < lx->n && tok_is(&lx->tok[lx->pos], word);
+  return lx->pos < lx->n && lexer_is(&lx->tok[lx->pos], word);
 }
 
 /* Levenshtein distance, for "did you mean" (words are short). */
@@ -135,14 +193,19 @@ static int edit_distance(const char *a, int la, const char *b)
 
 /* Fail on an unknown word, listing the valid ones and the nearest of them. */
 bool lexer_fail_unknown(const Lexer *lx, const char *what,
-                         const char *const *words, int n_words)
+                        const char *const *words, int n_words)
 {
-  char buf[64], list[256] = "", hint[96] = "";
+  char buf[192], list[256] = "", hint[96] = "";
   int best = LEXER_TOKEN_MAX;
   const Token *t = &lx->tok[lx->pos];
+  bool full = false;
   for (int k = 0; k < n_words; k++) {
-    snprintf(list + strlen(list), sizeof list - strlen(list), "%s%s",
-             k ? ", " : "", words[k]);
+    size_t used = strlen(list);
+    full = full || used + strlen(words[k]) + 7 >= sizeof list; /* ", word" and ", ..." */
+    if (!full)
+      snprintf(list + used, sizeof list - used, "%s%s", k ? ", " : "", words[k]);
+    else if (!strstr(list, "..."))
+      snprintf(list + used, sizeof list - used, ", ...");
     int d = edit_distance(t->s, t->len, words[k]);
     if (d < best && d <= 2 && d < (int)strlen(words[k])) {
       best = d;
@@ -150,26 +213,31 @@ bool lexer_fail_unknown(const Lexer *lx, const char *what,
     }
   }
   return lexer_fail(lx, t->col, "expected %s (%s), found %s%s", what, list,
-              found(lx, buf, sizeof buf), hint);
+                    found(lx, buf, sizeof buf), hint);
 }
 
 /* Read a finite number; `nonneg` also rejects negative values (then `what`
- * says ">= 0"). An underflow to 0 or a subnormal is accepted (strtof's
- * ERANGE): only overflow is non-finite. */
+ * says ">= 0"). Below the normal float range (a subnormal, or an underflow
+ * to 0) is refused like an overflow: write 0. */
 bool lexer_number(Lexer *lx, const char *what, bool nonneg, float *out)
 {
-  char buf[64], text[LEXER_TOKEN_MAX];
+  char buf[192];
   if (lx->pos >= lx->n)
     return lexer_fail(lx, lx->end_col, "expected %s, found end of line", what);
   const Token *t = &lx->tok[lx->pos];
-  tok_copy(text, sizeof text, t);
-  char *end;
-  float v = strtof(text, &end);
-  if (end == text || *end != '\0')
+  float v = 0.0f;
+  switch (number_parse(t->s, t->len, &v)) {
+  case NUMBER_BAD:
     return lexer_fail(lx, t->col, "expected %s, found %s", what, found(lx, buf, sizeof buf));
-  if (!isfinite(v))
+  case NUMBER_NONFINITE:
     return lexer_fail(lx, t->col, "expected %s, found a non-finite value %s", what,
-                found(lx, buf, sizeof buf));
+                      found(lx, buf, sizeof buf));
+  case NUMBER_TINY:
+    return lexer_fail(lx, t->col, "expected %s, found %s, below the smallest normal "
+                      "float 1.2e-38 (write 0)", what, found(lx, buf, sizeof buf));
+  case NUMBER_OK:
+    break;
+  }
   if (nonneg && v < 0.0f)
     return lexer_fail(lx, t->col, "expected %s, found %s", what, found(lx, buf, sizeof buf));
   lx->pos++;
@@ -188,7 +256,7 @@ bool lexer_vec(Lexer *lx, const char *what, bool nonneg, vec3s *out)
 /* A whole number in [lo, hi]. */
 bool lexer_int(Lexer *lx, const char *what, int lo, int hi, int *out)
 {
-  char buf[64];
+  char buf[192];
   int col = next_col(lx);
   float v = 0.0f;
   if (!lexer_number(lx, what, false, &v))
@@ -196,94 +264,36 @@ bool lexer_int(Lexer *lx, const char *what, int lo, int hi, int *out)
   lx->pos--;
   if (v != floorf(v) || v < (float)lo || v > (float)hi)
     return lexer_fail(lx, col, "expected %s, a whole number from %d to %d, found %s",
-                what, lo, hi, found(lx, buf, sizeof buf));
+                      what, lo, hi, found(lx, buf, sizeof buf));
   lx->pos++;
   *out = (int)v;
   return true;
 }
 
-bool lexer_name(Lexer *lx, const char *what, char out[MATERIAL_NAME_MAX])
+bool lexer_name(Lexer *lx, const char *what, int max_len, Token *out)
 {
-  char buf[64];
+  char buf[192];
   if (lx->pos >= lx->n)
     return lexer_fail(lx, lx->end_col, "expected %s, found end of line", what);
   const Token *t = &lx->tok[lx->pos];
-  bool ok = t->len < MATERIAL_NAME_MAX && (t->s[0] == '_' || (t->s[0] | 32) >= 'a')
-            && (t->s[0] | 32) <= 'z';
+  bool ok = t->len <= max_len && (t->s[0] == '_' || (t->s[0] | 32) >= 'a') &&
+            (t->s[0] | 32) <= 'z';
   for (int k = 1; ok && k < t->len; k++)
     ok = t->s[k] == '_' || (t->s[k] >= '0' && t->s[k] <= '9') ||
          ((t->s[k] | 32) >= 'a' && (t->s[k] | 32) <= 'z');
   if (!ok)
     return lexer_fail(lx, t->col, "expected %s (letters, digits, '_', at most %d "
-                "characters), found %s", what, MATERIAL_NAME_MAX - 1,
-                found(lx, buf, sizeof buf));
-  tok_copy(out, MATERIAL_NAME_MAX, t);
+                      "characters), found %s", what, max_len, found(lx, buf, sizeof buf));
+  *out = *t;
   lx->pos++;
   return true;
 }
 
 bool lexer_expect_end(Lexer *lx)
 {
-  char buf[64];
+  char buf[192];
   if (lx->pos < lx->n)
     return lexer_fail(lx, lx->tok[lx->pos].col, "expected end of line, found an extra "
-                "value %s", found(lx, buf, sizeof buf));
+                      "value %s", found(lx, buf, sizeof buf));
   return true;
 }
-
-/* ------------------------------------------------------------ keyword lists */
-
-/* Read `keyword values` pairs to the end of the line, in any order. */
-bool lexer_fields(Lexer *lx, const char *what, const Key *keys, int n_keys,
-                        Field *fields)
-{
-  const char *names[LEXER_MAX_KEYS];
-  for (int k = 0; k < n_keys; k++)
-    names[k] = keys[k].name;
-  memset(fields, 0, sizeof(Field) * (size_t)n_keys);
-  while (lx->pos < lx->n) {
-    const Token *t = &lx->tok[lx->pos];
-    int k = 0;
-    while (k < n_keys && !tok_is(t, keys[k].name))
-      k++;
-    if (k == n_keys) {
-      char *end;
-      char text[LEXER_TOKEN_MAX];
-      tok_copy(text, sizeof text, t);
-      strtof(text, &end);
-      if (end != text && *end == '\0')
-        return lexer_fail(lx, t->col, "expected a %s keyword, found an extra value '%s'",
-                    what, text);
-      char kw[96];
-      snprintf(kw, sizeof kw, "a %s keyword", what);
-      return lexer_fail_unknown(lx, kw, names, n_keys);
-    }
-    if (fields[k].set)
-      return lexer_fail(lx, t->col, "expected each %s keyword once, found a second "
-                  "'%s' (first at column %d)", what, keys[k].name, fields[k].col);
-    fields[k].set = true;
-    fields[k].col = t->col;
-    lx->pos++;
-    fields[k].val_col = next_col(lx);
-    if (lx->pos < lx->n)
-      tok_copy(fields[k].text, sizeof fields[k].text, &lx->tok[lx->pos]);
-    KeyKind kind = keys[k].kind;
-    char desc[96] = ""; /* what the values are, for messages: "3 numbers after 'center'" */
-    append(desc, sizeof desc, kind == KEY_NUM     ? "a number"
-                              : kind == KEY_COLOR ? "3 numbers >= 0" : "3 numbers");
-    append(desc, sizeof desc, " after '");
-    append(desc, sizeof desc, keys[k].name);
-    append(desc, sizeof desc, "'");
-    bool ok = kind == KEY_NUM    ? lexer_number(lx, desc, false, &fields[k].v.x)
-              : kind == KEY_NAME ? lexer_name(lx, "a material name", fields[k].name)
-                                 : lexer_vec(lx, desc, kind == KEY_COLOR, &fields[k].v);
-    if (!ok)
-      return false;
-  }
-  for (int k = 0; k < n_keys; k++)
-    if (keys[k].required && !fields[k].set)
-      return lexer_fail(lx, lx->end_col, "expected '%s' in this %s statement, found end "
-                  "of line", keys[k].name, what);
-  return true;
-}
-

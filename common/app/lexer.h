@@ -6,36 +6,52 @@
 #define RT_LEXER_H
 
 #include <stdbool.h>
-#include "material.h"
+#include <stddef.h>
+#include "vec.h"
 
 enum { LEXER_MAX_TOKENS = 64, LEXER_TOKEN_MAX = 64 };
 
+/* Coordinates are at most this in magnitude; lengths lie in
+ * [1 / LEXER_MAX_COORD, LEXER_MAX_COORD]: squares and differences then fit in
+ * a float (docs/scene-format.md, "Limits"). */
+#define LEXER_MAX_COORD 1e18f
+#define LEXER_MIN_LENGTH 1e-18f
+
 typedef struct Token {
-  const char *s;
-  int len, col; /* col counts bytes from 1 */
+  const char *s; /* into the text, not terminated */
+  int len, col;  /* col counts bytes from 1 */
 } Token;
 
 typedef struct Lexer {
   const char *file;          /* name used in messages */
-  const char *next;          /* start of the next line in the text */
+  const char *next, *end;    /* the text not read yet */
   int line;                  /* current line, from 1 */
   Token tok[LEXER_MAX_TOKENS];
   int n, pos;                /* words on this line, next one to read */
   int end_col;               /* column just past the line's last word */
+  bool quiet;                /* errors are not printed (lexer_fail only fails) */
 } Lexer;
 
-/* Start reading `text` (NUL-terminated); `file` names it in messages. */
-void lexer_init(Lexer *lx, const char *file, const char *text);
+/* Start reading the `len` bytes of `text`; `file` names it in messages. */
+void lexer_init(Lexer *lx, const char *file, const char *text, size_t len);
+
+/* Skip a UTF-8 byte-order mark at the start of the text, if any (a file's
+ * start only: anywhere else it is part of a word). */
+void lexer_skip_bom(Lexer *lx);
 
 /* Split the next line that has words (comments start at '#'). Returns 1 with
  * the words in lx->tok, 0 at the end of the text, -1 after printing an error
  * (control characters, words too long, too many words). */
 int lexer_line(Lexer *lx);
 
+/* True when token `t` is `word`. */
+bool lexer_is(const Token *t, const char *word);
+
 /* True when the next word is `word` (not consumed). */
 bool lexer_peek_is(const Lexer *lx, const char *word);
 
-/* Print `FILE:LINE:COL: message` for the current line; returns false. */
+/* Print `FILE:LINE:COL: message` for the current line (unless quiet);
+ * returns false. */
 bool lexer_fail(const Lexer *lx, int col, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
 
@@ -47,38 +63,8 @@ bool lexer_fail_unknown(const Lexer *lx, const char *what,
 bool lexer_number(Lexer *lx, const char *what, bool nonneg, float *out);
 bool lexer_vec(Lexer *lx, const char *what, bool nonneg, vec3s *out);
 bool lexer_int(Lexer *lx, const char *what, int lo, int hi, int *out);
-bool lexer_name(Lexer *lx, const char *what, char out[MATERIAL_NAME_MAX]);
+/* A name (letter or '_', then letters, digits, '_'), as a token of the text. */
+bool lexer_name(Lexer *lx, const char *what, int max_len, Token *out);
 bool lexer_expect_end(Lexer *lx);
-
-/* Keyword lists: `keyword values` pairs to the end of the line, any order. */
-typedef enum KeyKind {
-  KEY_VEC,    /* three numbers */
-  KEY_COLOR,  /* three numbers >= 0 */
-  KEY_NUM,    /* one number */
-  KEY_NAME,   /* a material name */
-} KeyKind;
-
-typedef struct Key {
-  const char *name;
-  KeyKind kind;
-  bool required;
-} Key;
-
-typedef struct Field {
-  bool set;
-  int col;                 /* column of the keyword */
-  int val_col;             /* column of its first value */
-  char text[LEXER_TOKEN_MAX]; /* its first value as written */
-  vec3s v;                 /* the vector, or v.x for KEY_NUM */
-  char name[MATERIAL_NAME_MAX];
-} Field;
-
-enum { LEXER_MAX_KEYS = 6 };
-
-/* Read the rest of the line as keyword lists of `keys` into `fields` (same
- * order); each keyword at most once, required ones present. `what` names the
- * statement in messages. */
-bool lexer_fields(Lexer *lx, const char *what, const Key *keys, int n_keys,
-                  Field *fields);
 
 #endif

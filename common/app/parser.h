@@ -4,14 +4,22 @@
 #define RT_PARSER_H
 
 #include <stdbool.h>
+#include <stddef.h>
 #include "scene.h"
 
-/* Parse scene text into `scene` (which must be freshly scene_init'ed); `file`
- * names the text in messages. On error prints one line to stderr, frees what
- * was built and returns false. */
+/* Largest scene file or text, in bytes: lines and columns stay ints. */
+#define PARSER_MAX_BYTES ((size_t)2147483647)
+
+/* Parse the `len` bytes of `text` (NUL bytes in it are errors) into `scene`,
+ * which must be freshly scene_init'ed; `file` names the text in messages. On
+ * error prints one line to stderr, frees what was built and returns false. */
+bool parser_load_text(const char *file, const char *text, size_t len, Scene *scene);
+
+/* The same for a NUL-terminated string. */
 bool parser_load_string(const char *file, const char *text, Scene *scene);
 
-/* Read and parse the file at `path`. Same contract as parser_load_string. */
+/* Read and parse the file at `path`. Same contract as parser_load_text; a
+ * file that cannot be read whole prints `parser: cannot read 'PATH': REASON`. */
 bool parser_load_file(const char *path, Scene *scene);
 
 #endif

@@ -1,0 +1,318 @@
+/* The binned surface area heuristic (docs/performance.md): each node split
+ * where a ray pays least, i.e. minimising
+ *   C_trav + (A_left / A) cost(left) + (A_right / A) cost(right),
+ * with a leaf of n items costing n C_item (each item is tested on its own).
+ * Items may be weighted (clusters of boxes, common/accel/bvh.c). */
+#include "accel/bvh_sah.h"
+
+#include <float.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+enum {
+  BINS = 16,
+  MAX_DEPTH = 40,
+  SMALL = 16,        /* nodes this small are swept bin by non-empty bin */
+  TASK_MIN = 8192,   /* subtrees of more (weighted) items are built as tasks */
+};
+static const float COST_TRAV = 1.0f, COST_ITEM = 1.5f;
+
+Box sah_box_empty(void)
+{
+  return (Box){{FLT_MAX, FLT_MAX, FLT_MAX, 0.0f}, {-FLT_MAX, -FLT_MAX, -FLT_MAX, 0.0f}};
+}
+
+/* Lane by lane, a < b ? a : b. */
+static V4 v4_min(V4 a, V4 b)
+{
+  I4 m = a < b;
+  return (V4)((m & (I4)a) | (~m & (I4)b));
+}
+
+static V4 v4_max(V4 a, V4 b)
+{
+  I4 m = a > b;
+  return (V4)((m & (I4)a) | (~m & (I4)b));
+}
+
+void sah_box_grow(Box *b, const Box *x)
+{
+  b->lo = v4_min(x->lo, b->lo);
+  b->hi = v4_max(x->hi, b->hi);
+}
+
+/* Half the surface area (the factor 2 cancels in every ratio). */
+static float box_area(const Box *b)
+{
+  float dx = b->hi[0] - b->lo[0], dy = b->hi[1] - b->lo[1], dz = b->hi[2] - b->lo[2];
+  return dx < 0.0f ? 0.0f : dx * dy + dy * dz + dz * dx;
+}
+
+static float leaf_cost(int count)
+{
+  return COST_ITEM * (float)count;
+}
+
+/* The bin of twice a centre, c = lo + hi, on an axis starting at `lo` with
+ * BINS / extent = `scale`. Clamped before the conversion: a huge or NaN
+ * product lands in a boundary bin (NaN in bin 0) instead of being converted
+ * out of int's range. */
+static int bin_of(float c, float lo, float scale)
+{
+  float x = (c - lo) * scale;
+  x = x > 0.0f ? x : 0.0f;
+  return (int)(x < (float)(BINS - 1) ? x : (float)(BINS - 1));
+}
+
+/* How many boxes item k stands for. */
+static int weight_of(const SahBuild *b, int k)
+{
+  return b->weight ? b->weight[k] : 1;
+}
+
+static float centre2(const Box *it, int a)
+{
+  return it->lo[a] + it->hi[a];
+}
+
+/* bin_of on the three axes at once (scale's 4th lane is 0: bin 0). */
+static I4 bins_of(const Box *it, const Box *cb, V4 scale)
+{
+  V4 x = (it->lo + it->hi - cb->lo) * scale, zero = {0.0f, 0.0f, 0.0f, 0.0f};
+  V4 top = {BINS - 1, BINS - 1, BINS - 1, BINS - 1};
+  I4 m = x > zero;
+  x = (V4)(m & (I4)x);
+  return __builtin_convertvector(v4_min(x, top), I4);
+}
+
+/* Items per bin and their bounds, on each axis, in one pass over the items. */
+typedef struct Bins {
+  Box box[3][BINS];
+  int n[3][BINS];
+} Bins;
+
+static void fill_bins(const SahBuild *b, int first, int count, const Box *cb, V4 scale,
+                      Bins *bins)
+{
+  for (int a = 0; a < 3; a++)
+    for (int k = 0; k < BINS; k++) {
+      bins->box[a][k] = sah_box_empty();
+      bins->n[a][k] = 0;
+    }
+  for (int k = first; k < first + count; k++) {
+    const Box *it = &b->items[k];
+    I4 bin = bins_of(it, cb, scale);
+    for (int a = 0; a < 3; a++) {
+      bins->n[a][bin[a]] += weight_of(b, k);
+      sah_box_grow(&bins->box[a][bin[a]], it);
+    }
+  }
+}
+
+/* Keep the split at bin boundary k of axis a when it is the cheapest yet. */
+static void consider(float cost, int a, int k, float *best, int *axis, int *split_bin)
+{
+  if (cost < *best) {
+    *best = cost;
+    *axis = a;
+    *split_bin = k;
+  }
+}
+
+/* The cheapest boundary on axis a: sweep from the right keeping suffix
+ * areas, then from the left. */
+static void sweep(const Bins *bins, int a, float area, float *best, int *axis,
+                  int *split_bin)
+{
+  float right_area[BINS];
+  int right_n[BINS];
+  Box acc = sah_box_empty();
+  int acc_n = 0;
+  for (int k = BINS - 1; k > 0; k--) {
+    sah_box_grow(&acc, &bins->box[a][k]);
+    acc_n += bins->n[a][k];
+    right_area[k] = box_area(&acc);
+    right_n[k] = acc_n;
+  }
+  acc = sah_box_empty();
+  acc_n = 0;
+  for (int k = 1; k < BINS; k++) {
+    sah_box_grow(&acc, &bins->box[a][k - 1]);
+    acc_n += bins->n[a][k - 1];
+    if (acc_n > 0 && right_n[k] > 0)
+      consider(COST_TRAV + (box_area(&acc) * leaf_cost(acc_n) +
+                            right_area[k] * leaf_cost(right_n[k])) / area,
+               a, k, best, axis, split_bin);
+  }
+}
+
+/* The sweep of a small node (count <= SMALL), bin by non-empty bin: the
+ * boundaries between two non-empty bins give the same two sets, and the first
+ * of them is the one the dense sweep keeps (a strictly lower cost wins), so
+ * the choice is the dense sweep's, for far less work than 16 bins a node. */
+static void sweep_small(const SahBuild *b, int first, int count, const Box *cb, int a,
+                        float scale, float area, float *best, int *axis, int *split_bin)
+{
+  int bin[SMALL], order[SMALL], n[SMALL], right_n[SMALL], last[SMALL], groups = 0;
+  Box box[SMALL], right[SMALL];
+  for (int k = 0; k < count; k++) { /* insertion sort of the items by bin */
+    int v = bin_of(centre2(&b->items[first + k], a), cb->lo[a], scale), j = k;
+    for (; j > 0 && bin[j - 1] > v; j--) {
+      bin[j] = bin[j - 1];
+      order[j] = order[j - 1];
+    }
+    bin[j] = v;
+    order[j] = k;
+  }
+  for (int k = 0; k < count; k++) { /* one group per non-empty bin */
+    if (k == 0 || bin[k] != bin[k - 1]) {
+      box[groups] = sah_box_empty();
+      n[groups] = 0;
+      last[groups++] = bin[k];
+    }
+    sah_box_grow(&box[groups - 1], &b->items[first + order[k]]);
+    n[groups - 1] += weight_of(b, first + order[k]);
+  }
+  Box acc = sah_box_empty();
+  int acc_n = 0;
+  for (int g = groups - 1; g > 0; g--) {
+    sah_box_grow(&acc, &box[g]);
+    acc_n += n[g];
+    right[g] = acc;
+    right_n[g] = acc_n;
+  }
+  acc = sah_box_empty();
+  acc_n = 0;
+  for (int g = 1; g < groups; g++) {
+    sah_box_grow(&acc, &box[g - 1]);
+    acc_n += n[g - 1];
+    consider(COST_TRAV + (box_area(&acc) * leaf_cost(acc_n) +
+                          box_area(&right[g]) * leaf_cost(right_n[g])) / area,
+             a, last[g - 1] + 1, best, axis, split_bin);
+  }
+}
+
+/* The best binned split of items [first, first + count): its cost, axis and
+ * bin boundary (items with bin < *split_bin go left). */
+static float best_split(const SahBuild *b, int first, int count, const Box *cb,
+                        float area, int *axis, int *split_bin)
+{
+  float best = FLT_MAX;
+  V4 scale = {0.0f, 0.0f, 0.0f, 0.0f};
+  for (int a = 0; a < 3; a++) {
+    float extent = cb->hi[a] - cb->lo[a];
+    scale[a] = extent > 0.0f ? (float)BINS / extent : 0.0f;
+  }
+  if (count <= SMALL) {
+    for (int a = 0; a < 3; a++)
+      if (scale[a] != 0.0f)
+        sweep_small(b, first, count, cb, a, scale[a], area, &best, axis, split_bin);
+    return best;
+  }
+  Bins bins;
+  fill_bins(b, first, count, cb, scale, &bins);
+  for (int a = 0; a < 3; a++)
+    if (scale[a] != 0.0f)
+      sweep(&bins, a, area, &best, axis, split_bin);
+  return best;
+}
+
+/* Move the items of bin < split_bin on `axis` to the front; returns the
+ * first of the others. */
+static int split_items(SahBuild *b, int first, int count, const Box *cb, int axis,
+                       int split_bin)
+{
+  float scale = (float)BINS / (cb->hi[axis] - cb->lo[axis]);
+  int i = first, j = first + count - 1;
+  while (i <= j) {
+    if (bin_of(centre2(&b->items[i], axis), cb->lo[axis], scale) < split_bin) {
+      i++;
+    } else {
+      Box tmp = b->items[i];
+      int id = b->ids[i];
+      b->items[i] = b->items[j];
+      b->ids[i] = b->ids[j];
+      b->items[j] = tmp;
+      b->ids[j] = id;
+      if (b->weight) {
+        int w = b->weight[i];
+        b->weight[i] = b->weight[j];
+        b->weight[j] = w;
+      }
+      j--;
+    }
+  }
+  return i;
+}
+
+/* Split [first, first + count) in two; returns the first index of the right
+ * half. Falls back to halving by count when the heuristic cannot separate
+ * the items (all centres equal) or the tree is already deep (a pathological
+ * distribution): depth stays below MAX_DEPTH + log2(n). */
+static int partition(SahBuild *b, int first, int count, const Box *cb, float area,
+                     int depth, bool *leaf)
+{
+  int axis = 0, split_bin = 0;
+  float cost = depth < MAX_DEPTH && count > 1
+                   ? best_split(b, first, count, cb, area, &axis, &split_bin)
+                   : FLT_MAX;
+  *leaf = count <= b->leaf_max && !(cost < leaf_cost(count));
+  if (*leaf)
+    return first;
+  if (cost < FLT_MAX)
+    return split_items(b, first, count, cb, axis, split_bin);
+  return first + count / 2;
+}
+
+/* The weighted count of items [first, first + count). */
+static int weight_sum(const SahBuild *b, int first, int count)
+{
+  if (!b->weight)
+    return count;
+  int sum = 0;
+  for (int k = first; k < first + count; k++)
+    sum += b->weight[k];
+  return sum;
+}
+
+void sah_build_node(SahBuild *b, int node, int first, int count, int depth, int block)
+{
+  Box box = sah_box_empty(), cb = sah_box_empty();
+  for (int k = first; k < first + count; k++) {
+    const Box *it = &b->items[k];
+    Box c = {it->lo + it->hi, it->lo + it->hi};
+    sah_box_grow(&box, it);
+    sah_box_grow(&cb, &c);
+  }
+  bool leaf = count <= 1 || b->one_leaf;
+  int mid = leaf ? first : partition(b, first, count, &cb, box_area(&box), depth, &leaf);
+  if (leaf && b->weight) { /* one cluster: its own build fills the node */
+    b->leaf_node[first] = node;
+    b->leaf_block[first] = block;
+    return;
+  }
+  BvhNode *nd = &b->nodes[node];
+  for (int a = 0; a < 3; a++) {
+    nd->lo[a] = box.lo[a];
+    nd->hi[a] = box.hi[a];
+  }
+  if (leaf) {
+    nd->index = first;
+    nd->meta = count;
+    return;
+  }
+  int axis = 0;
+  for (int a = 1; a < 3; a++)
+    if (cb.hi[a] - cb.lo[a] > cb.hi[axis] - cb.lo[axis])
+      axis = a;
+  nd->index = block;
+  nd->meta = -1 - axis;
+  int lc = mid - first, lw = weight_sum(b, first, lc);
+  if (lw > TASK_MIN) {
+#pragma omp task default(none) firstprivate(b, block, first, lc, depth)
+    sah_build_node(b, block, first, lc, depth + 1, block + 2);
+  } else {
+    sah_build_node(b, block, first, lc, depth + 1, block + 2);
+  }
+  sah_build_node(b, block + 1, mid, count - lc, depth + 1, block + 2 * lw);
+}

@@ -1,0 +1,46 @@
+/* The binned surface-area-heuristic split of common/accel/bvh.c: the build of
+ * a subtree over weighted boxes (docs/performance.md). Internal to
+ * common/accel/bvh.c. */
+#ifndef RT_BVH_SAH_H
+#define RT_BVH_SAH_H
+
+#include <stdbool.h>
+
+#include "accel/bvh.h"
+
+/* Bounds in 4 lanes (the 4th stays 0), as GCC/clang vectors: a box grows in
+ * a few vector instructions. */
+typedef float V4 __attribute__((vector_size(16)));
+typedef int I4 __attribute__((vector_size(16)));
+
+typedef struct Box {
+  V4 lo, hi;
+} Box;
+
+/* A build over items (boxes), partitioned in place. With `weight`, item k
+ * stands for weight[k] boxes (a cluster) and counts that much in the
+ * heuristic and in the node blocks; each leaf is then one item, and
+ * leaf_node/leaf_block[position] say where its subtree goes. */
+typedef struct SahBuild {
+  Box *items;
+  int *ids;            /* moved with the items */
+  int *weight;         /* NULL: 1 each */
+  BvhNode *nodes;      /* a subtree of c (weighted) items owns 2 c - 1 slots */
+  int leaf_max;        /* most items a leaf may hold (1 with weights) */
+  bool one_leaf;       /* the root is a leaf of everything */
+  int *leaf_node, *leaf_block; /* with weights */
+} SahBuild;
+
+/* The empty box (lo > hi), and a box grown to hold x. */
+Box sah_box_empty(void);
+void sah_box_grow(Box *b, const Box *x);
+
+/* Build node `node` over items [first, first + count) at `depth`; its
+ * descendants go to the slots from `block` on (the left child's c_l items in
+ * the 2 c_l - 2 after the pair, the right child's after them). Subtrees of
+ * more than a few thousand items become OpenMP tasks: call it inside a
+ * parallel region's single construct. The nodes are the same for any
+ * number of threads. */
+void sah_build_node(SahBuild *b, int node, int first, int count, int depth, int block);
+
+#endif

@@ -1,0 +1,110 @@
+/* Numbers of the scene format (step 02): the float strtof gives, faster for
+ * the plain decimals scenes are made of. docs/scene-format.md, "Numbers". */
+#include "app/number.h"
+
+#include <errno.h>
+#include <float.h>
+#include <math.h>
+#include <stdbool.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* 10^k, exact in double for k <= 22. */
+static const double POW10[23] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                                 1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
+                                 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+
+/* What strtof says of the whole word, read from a terminated copy. */
+static NumberStatus slow(const char *s, int len, float *out)
+{
+  char small[128], *buf = len < (int)sizeof small ? small : malloc((size_t)len + 1);
+  if (!buf)
+    return NUMBER_BAD;
+  memcpy(buf, s, (size_t)len);
+  buf[len] = '\0';
+  char *end;
+  errno = 0;
+  float v = strtof(buf, &end);
+  bool whole = end == buf + len && len > 0, range = errno == ERANGE;
+  if (buf != small)
+    free(buf);
+  if (!whole)
+    return NUMBER_BAD;
+  if (!isfinite(v))
+    return NUMBER_NONFINITE;
+  if ((v != 0.0f && fabsf(v) < FLT_MIN) || (v == 0.0f && range))
+    return NUMBER_TINY;
+  *out = v;
+  return NUMBER_OK;
+}
+
+/* [sign] digits [. digits] [e [sign] digits] with at most 19 significant
+ * digits: *m the digits as an integer, *e10 the power of ten to apply. False
+ * for anything else (hex, inf, nan, longer mantissas, stray bytes). */
+static bool decimal(const char *s, const char *end, bool *neg, uint64_t *m, int *e10)
+{
+  int digits = 0, seen = 0, exp = 0;
+  *neg = s < end && *s == '-';
+  s += s < end && (*s == '-' || *s == '+');
+  *m = 0;
+  *e10 = 0;
+  for (bool frac = false; s < end; s++) {
+    if (*s == '.' && !frac) {
+      frac = true;
+      continue;
+    }
+    if (*s < '0' || *s > '9')
+      break;
+    seen++;
+    if (*m == 0 && *s == '0') { /* leading zeros only shift the point */
+      *e10 -= frac;
+      continue;
+    }
+    if (++digits > 19)
+      return false;
+    *m = *m * 10 + (uint64_t)(*s - '0');
+    *e10 -= frac;
+  }
+  if (seen == 0)
+    return false;
+  if (s < end && (*s == 'e' || *s == 'E')) {
+    s++;
+    bool eneg = s < end && *s == '-';
+    s += s < end && (*s == '-' || *s == '+');
+    if (s == end)
+      return false;
+    for (; s < end && *s >= '0' && *s <= '9'; s++)
+      exp = exp < 100000 ? 10 * exp + (*s - '0') : exp;
+    *e10 += eneg ? -exp : exp;
+  }
+  return s == end;
+}
+
+/* m 10^e10 is computed in double with one rounding (m < 2^53 and 10^|e10|
+ * exact), then rounded to float. That second rounding gives strtof's float
+ * unless the double landed exactly halfway between two floats (the true value
+ * lies on one side of that midpoint, the double cannot cross it): those
+ * words, and results outside the normal float range, go to strtof. */
+NumberStatus number_parse(const char *s, int len, float *out)
+{
+  bool neg;
+  uint64_t m;
+  int e10;
+  if (!decimal(s, s + len, &neg, &m, &e10))
+    return slow(s, len, out);
+  if (m == 0) {
+    *out = neg ? -0.0f : 0.0f;
+    return NUMBER_OK;
+  }
+  if (m >= (1ull << 53) || e10 < -22 || e10 > 22)
+    return slow(s, len, out);
+  double r = e10 >= 0 ? (double)m * POW10[e10] : (double)m / POW10[-e10];
+  uint64_t bits;
+  memcpy(&bits, &r, sizeof bits);
+  bool halfway = (bits & 0x1fffffffu) == 0x10000000u; /* 29 bits below a float's */
+  if (halfway || r < (double)FLT_MIN || r >= (double)FLT_MAX)
+    return slow(s, len, out);
+  *out = neg ? -(float)r : (float)r;
+  return NUMBER_OK;
+}

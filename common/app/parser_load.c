@@ -1,0 +1,182 @@
+/* Whole scene texts (step 02): a file read whole, then parsed; a large text
+ * in pieces at once, one per thread, merged in file order (a scene of 10^6
+ * spheres is 74 MB). Errors are always reported by the one-piece parse, so
+ * they read the same. docs/scene-format.md; docs/reliability.md. */
+#include "app/parser.h"
+#include "app/parser_state.h"
+
+#include <errno.h>
+#include <omp.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "app/textfile.h"
+
+enum {
+  PIECE_MIN = 1 << 21, /* bytes: smaller texts are parsed in one piece */
+  PIECES_MAX = 64,
+};
+
+static bool parse_whole(const char *file, const char *text, size_t len, Scene *scene)
+{
+  Parser p;
+  parser_begin(&p, file, text, len, scene);
+  lexer_skip_bom(&p.lx);
+  bool ok = parser_statements(&p) && parser_resolve(&p);
+  parser_end(&p);
+  if (!ok)
+    scene_free(scene);
+  return ok;
+}
+
+/* Piece boundaries, each just after a '\n': start[0 .. n], start[n] = len. */
+static int cut_pieces(const char *text, size_t len, int want, size_t *start)
+{
+  int n = 1;
+  start[0] = 0;
+  for (int k = 1; k < want; k++) {
+    size_t at = len / (size_t)want * (size_t)k;
+    const char *nl = at > start[n - 1] ? memchr(text + at, '\n', len - at) : NULL;
+    if (nl && (size_t)(nl - text) + 1 < len)
+      start[n++] = (size_t)(nl - text) + 1;
+  }
+  start[n] = len;
+  return n;
+}
+
+typedef struct Piece {
+  Scene scene;
+  Parser p;
+  bool ok;
+} Piece;
+
+/* The values of piece q's once-statements into piece 0's; false when both
+ * have one (the whole parse says where the second is). */
+static bool merge_once(Piece *to, const Piece *q)
+{
+  for (int w = 0; w < ONCE_COUNT; w++) {
+    if (!q->p.once_line[w])
+      continue;
+    if (to->p.once_line[w])
+      return false;
+    to->p.once_line[w] = 1;
+    const Scene *s = &q->scene;
+    switch (w) {
+    case ONCE_FILM: to->scene.width = s->width, to->scene.height = s->height; break;
+    case ONCE_CAMERA: to->scene.camera = s->camera; break;
+    case ONCE_AMBIENT: to->scene.ambient = s->ambient; break;
+    case ONCE_BACKGROUND: to->scene.background = s->background; break;
+    case ONCE_SAMPLES: to->scene.samples = s->samples; break;
+    default: to->scene.light_samples = s->light_samples; break;
+    }
+  }
+  return true;
+}
+
+/* Append piece q to piece 0: materials (each name new), lights, shapes
+ * (their material indices moved past piece 0's), references left to
+ * resolve. False on a conflict or out of memory. */
+static bool merge(Piece *to, const Piece *q)
+{
+  Scene *s = &to->scene;
+  int first_material = s->n_materials, first_instance = s->n_instances;
+  if (!merge_once(to, q))
+    return false;
+  for (int k = 0; k < q->scene.n_materials; k++) {
+    const Material *m = &q->scene.materials[k];
+    if (names_find(&to->p.names, parser_materials(s), m->name, (int)strlen(m->name)) >= 0 ||
+        !scene_add_material(s, m) || !names_add(&to->p.names, parser_materials(s),
+                                                s->n_materials - 1))
+      return false;
+  }
+  for (int k = 0; k < q->scene.n_lights; k++)
+    if (!scene_add_light(s, &q->scene.lights[k]))
+      return false;
+  for (int k = 0; k < q->scene.n_instances; k++) {
+    Instance inst = q->scene.instances[k];
+    inst.material += first_material;
+    if (!scene_add_instance(s, &inst))
+      return false;
+  }
+  for (int k = 0; k < q->p.n_pending; k++) {
+    Pending r = q->p.pending[k];
+    r.instance += first_instance;
+    if (!parser_pending_add(&to->p, &r))
+      return false;
+  }
+  return true;
+}
+
+bool parser_load_chunks(const char *file, const char *text, size_t len, Scene *scene,
+                        int chunks)
+{
+  size_t start[PIECES_MAX + 1];
+  int n = cut_pieces(text, len, chunks < PIECES_MAX ? chunks : PIECES_MAX, start);
+  /* aligned: a Scene holds cglm matrices, 32-byte aligned in AVX builds */
+  Piece *piece = aligned_alloc(_Alignof(Piece), (size_t)n * sizeof *piece);
+  if (n < 2 || !piece) {
+    free(piece);
+    return parse_whole(file, text, len, scene);
+  }
+#pragma omp parallel for schedule(static, 1)
+  for (int k = 0; k < n; k++) {
+    scene_init(&piece[k].scene);
+    parser_begin(&piece[k].p, file, text + start[k], start[k + 1] - start[k], &piece[k].scene);
+    piece[k].p.lx.quiet = true;
+    if (k == 0)
+      lexer_skip_bom(&piece[k].p.lx);
+    piece[k].ok = parser_statements(&piece[k].p);
+  }
+  bool ok = true;
+  for (int k = 0; k < n; k++)
+    ok = ok && piece[k].ok && (k == 0 || merge(&piece[0], &piece[k]));
+  ok = ok && parser_resolve(&piece[0].p);
+  for (int k = 0; k < n; k++) {
+    parser_end(&piece[k].p);
+    if (k > 0 || !ok)
+      scene_free(&piece[k].scene);
+  }
+  if (ok)
+    *scene = piece[0].scene;
+  free(piece);
+  return ok || parse_whole(file, text, len, scene);
+}
+
+bool parser_load_text(const char *file, const char *text, size_t len, Scene *scene)
+{
+  if (len > PARSER_MAX_BYTES) {
+    fprintf(stderr, "%s: expected at most %zu bytes, found %zu\n", file,
+            PARSER_MAX_BYTES, len);
+    scene_free(scene);
+    return false;
+  }
+  size_t pieces = len / PIECE_MIN, threads = (size_t)omp_get_max_threads();
+  if (pieces < 2 || threads < 2)
+    return parse_whole(file, text, len, scene);
+  return parser_load_chunks(file, text, len, scene, (int)(pieces < threads ? pieces : threads));
+}
+
+bool parser_load_string(const char *file, const char *text, Scene *scene)
+{
+  return parser_load_text(file, text, strlen(text), scene);
+}
+
+bool parser_load_file(const char *path, Scene *scene)
+{
+  char *text;
+  size_t len;
+  int err = textfile_read(path, PARSER_MAX_BYTES, &text, &len);
+  if (err == EFBIG)
+    fprintf(stderr, "parser: cannot read '%s': larger than %zu bytes, the limit of a "
+            "scene file\n", path, PARSER_MAX_BYTES);
+  else if (err)
+    fprintf(stderr, "parser: cannot read '%s': %s\n", path, strerror(err));
+  if (err) {
+    scene_free(scene);
+    return false;
+  }
+  bool ok = parser_load_text(path, text, len, scene);
+  free(text);
+  return ok;
+}

@@ -1,0 +1,58 @@
+/* The parser's state, shared by common/app/parser.c (the statements) and
+ * common/app/parser_load.c (whole texts, in parallel chunks when large).
+ * Internal to the parser; docs/scene-format.md. */
+#ifndef RT_PARSER_STATE_H
+#define RT_PARSER_STATE_H
+
+#include "app/lexer.h"
+#include "app/names.h"
+#include "scene.h"
+
+/* Statements that may appear once per file. */
+enum { ONCE_FILM, ONCE_CAMERA, ONCE_AMBIENT, ONCE_BACKGROUND, ONCE_SAMPLES,
+       ONCE_LIGHT_SAMPLES, ONCE_COUNT };
+
+/* A shape whose material was not defined yet where it was named. */
+typedef struct Pending {
+  int instance, line, col;
+  char name[MATERIAL_NAME_MAX];
+} Pending;
+
+typedef struct Parser {
+  Lexer lx;
+  Scene *scene;
+  Names names;       /* material name -> index into scene->materials */
+  Pending *pending;  /* in file order */
+  int n_pending;
+  int once_line[ONCE_COUNT]; /* where each once-statement was, 0: not yet */
+} Parser;
+
+/* The scene's materials as records of the names table. */
+NameRecords parser_materials(const Scene *scene);
+
+/* Start parsing `len` bytes of `text` into `scene` (scene_init'ed). */
+void parser_begin(Parser *p, const char *file, const char *text, size_t len, Scene *scene);
+
+/* Every statement to the end of the text; false after the first error
+ * (printed unless p->lx.quiet). Materials named before their definition
+ * are left in p->pending. */
+bool parser_statements(Parser *p);
+
+/* Append a reference to resolve at the end; false when out of memory. */
+bool parser_pending_add(Parser *p, const Pending *r);
+
+/* Resolve p->pending; false (printed) at the first undefined name. */
+bool parser_resolve(Parser *p);
+
+/* Free the parser's own memory (not the scene). */
+void parser_end(Parser *p);
+
+/* parser_load_text cut into `chunks` pieces at line starts, parsed at once
+ * (OpenMP) and merged; any error, in a piece or between pieces (a second
+ * `film`, a material defined twice, a name left undefined), and the text is
+ * parsed again whole, which prints the error as usual. Exposed for the tests,
+ * which compare it with the one-piece parse on every case. */
+bool parser_load_chunks(const char *file, const char *text, size_t len, Scene *scene,
+                        int chunks);
+
+#endif

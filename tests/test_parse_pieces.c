@@ -1,0 +1,87 @@
+/* The parse of a large scene in pieces at once (common/app/parser_load.c)
+ * against the one-piece parse: the same scene, or the same message, for
+ * every scene file of the repository. docs/reliability.md, "Large scenes". */
+#include "check.h"
+
+#include <dirent.h>
+#include <stdlib.h>
+#include <unistd.h>
+
+#include "app/parser.h"
+#include "app/parser_state.h"
+
+/* A scene's contents as bytes, for comparing two parses. */
+static bool same_scene(const Scene *a, const Scene *b)
+{
+  return a->width == b->width && a->height == b->height && a->samples == b->samples &&
+         a->light_samples == b->light_samples &&
+         memcmp(&a->camera, &b->camera, sizeof a->camera) == 0 &&
+         memcmp(&a->ambient, &b->ambient, sizeof a->ambient) == 0 &&
+         memcmp(&a->background, &b->background, sizeof a->background) == 0 &&
+         a->n_materials == b->n_materials && a->n_lights == b->n_lights &&
+         a->n_instances == b->n_instances && a->n_shapes == b->n_shapes &&
+         (a->n_materials == 0 || memcmp(a->materials, b->materials,
+                                        sizeof *a->materials * (size_t)a->n_materials) == 0) &&
+         (a->n_lights == 0 || memcmp(a->lights, b->lights,
+                                     sizeof *a->lights * (size_t)a->n_lights) == 0) &&
+         (a->n_instances == 0 || memcmp(a->instances, b->instances,
+                                        sizeof *a->instances * (size_t)a->n_instances) == 0);
+}
+
+/* What parser_load_chunks prints and builds for `text` in `chunks` pieces. */
+static bool parse_in_pieces(const char *text, size_t len, int chunks, Scene *s, char *err,
+                            size_t size)
+{
+  fflush(stderr);
+  FILE *tmp = tmpfile();
+  int saved = dup(2);
+  dup2(fileno(tmp), 2);
+  scene_init(s);
+  bool ok = parser_load_chunks("t.scene", text, len, s, chunks);
+  fflush(stderr);
+  dup2(saved, 2);
+  close(saved);
+  rewind(tmp);
+  err[fread(err, 1, size - 1, tmp)] = '\0';
+  fclose(tmp);
+  return ok;
+}
+
+/* Every scene of scenes/ and tests/bad/scenes/ parsed whole and in 2 to 9
+ * pieces (cut at lines, so that a second `film`, a material defined twice or
+ * used before its definition often fall in two pieces): the same scene, or
+ * the same message. */
+Test(parse_pieces, pieces_in_parallel_parse_as_the_whole)
+{
+  static const char *const dirs[] = {"scenes", "tests/bad/scenes"};
+  Check c = CHECK("parser_load_chunks", "docs/reliability.md, \"Large scenes\"");
+  for (int d = 0; d < 2; d++) {
+    DIR *dir = opendir(dirs[d]);
+    cr_assert(dir, "no %s", dirs[d]);
+    for (struct dirent *e; (e = readdir(dir));) {
+      if (!strstr(e->d_name, ".scene"))
+        continue;
+      char path[300], whole_err[512], piece_err[512];
+      snprintf(path, sizeof path, "%s/%.256s", dirs[d], e->d_name);
+      FILE *f = fopen(path, "rb");
+      cr_assert(f);
+      static char text[1 << 16];
+      size_t len = fread(text, 1, sizeof text, f);
+      fclose(f);
+      Scene whole, pieces;
+      bool ok = parse_in_pieces(text, len, 1, &whole, whole_err, sizeof whole_err);
+      for (int chunks = 2; chunks <= 9; chunks++) {
+        bool ok_p = parse_in_pieces(text, len, chunks, &pieces, piece_err, sizeof piece_err);
+        CHECK_THAT(&c, ok == ok_p && strcmp(whole_err, piece_err) == 0 &&
+                   (!ok || same_scene(&whole, &pieces)),
+                   "%.100s in %d pieces: expected %s%.200s, got %s%.200s", path, chunks,
+                   ok ? "the whole parse's scene" : "the whole parse's error: ", whole_err,
+                   ok_p ? (ok ? "a different scene" : "a scene") : "", piece_err);
+        scene_free(&pieces);
+      }
+      scene_free(&whole);
+    }
+    closedir(dir);
+  }
+  CHECK_DONE(&c);
+}
