@@ -1,0 +1,62 @@
+#!/usr/bin/env bash
+# The grader's base (docs/grading.md, "How a submission is graded"): from the
+# instructor's tree (the tracked files, git ls-files), the solved tree built
+# with the grading flags (its objects seed every scratch build; its binaries
+# render the hidden scenes) and the all-stubbed starter (what a missing file
+# is graded as); the files that hold solution regions; every test the
+# solution runs. Cached in CACHE/base-KEY, KEY a hash of the tree and flags.
+# Usage: tools/grading/base.sh CACHE   (prints the base's folder)
+set -euo pipefail
+
+[ $# = 1 ] || { echo "usage: tools/grading/base.sh CACHE" >&2; exit 2; }
+top=$(git -C "$(dirname "$0")" rev-parse --show-toplevel)
+cd "$top"
+cache=$(realpath -m -- "$1")
+opt=${GRADE_OPT:--O1}
+jobs=${GRADE_BUILD_JOBS:-$(nproc)}
+mkdir -p "$cache"
+
+key=$( { git ls-files -z | xargs -0 sha1sum 2>/dev/null; echo "OPT=$opt"; } | sha1sum | cut -c1-16)
+dir=$cache/base-$key
+exec 9>"$cache/base.lock"
+flock 9
+if [ -f "$dir/ready" ]; then echo "$dir"; exit 0; fi
+rm -rf "$dir" "$cache"/base-*
+mkdir -p "$dir"
+echo "grade: preparing the base (the solution built with OPT=$opt, its tests run) in $dir" >&2
+
+tools/starter.sh "$dir/solved" 9 >/dev/null
+tools/starter.sh "$dir/stub" 1 >/dev/null
+rm -rf "$dir/solved/docs/diffs"   # they quote the solution; nothing builds from them
+
+# The files a submission may replace: C sources and headers under common/ and
+# steps/ that hold a solution region.
+git ls-files -z -- 'common/*.c' 'common/*.h' 'steps/*.c' 'steps/*.h' |
+  xargs -0 grep -l '/\* BEGIN SOLUTION step [0-9][0-9] \*/' | sort >"$dir/regions.txt"
+
+steps=$(cd steps && ls -d [0-9][0-9]-* | sort)
+targets=$(for s in $steps; do echo "build/bin/$s build/tests/$s"; done)
+# The stress tests render through step 05 and tools/mistakes.c (make test's
+# prerequisites).
+stress=$(ls tests/stress_*.c >/dev/null 2>&1 && echo build/tests/stress || true)
+[ -z "$stress" ] || [ ! -f tools/mistakes.c ] || stress="$stress build/bin/mistakes"
+make -C "$dir/solved" -s -j"$jobs" OPT="$opt" $targets $stress >"$dir/build.log" 2>&1 || {
+  echo "grade: the solution does not build with OPT=$opt: see $dir/build.log" >&2; exit 1; }
+
+# Every test of every step (and of the stress suite), as the solution runs
+# them: STEP SUITE TEST STATUS, tab-separated.
+for s in $steps ${stress:+stress}; do
+  (cd "$dir/solved" && build/tests/$s --jobs 1 --json="$dir/$s.json" >"$dir/$s.log" 2>&1) || true
+  jq -r --arg s "$s" '.test_suites[] | .name as $suite | .tests[] | [$s, $suite, .name, .status] | @tsv' \
+    "$dir/$s.json"
+done >"$dir/tests.tsv"
+failing=$(awk -F'\t' '$4 != "PASSED" { print "  " $1 " " $2 "::" $3 }' "$dir/tests.tsv")
+if [ -n "$failing" ]; then
+  echo "grade: warning: the instructor's solution fails these tests (every submission will too):" >&2
+  echo "$failing" >&2
+fi
+rm -rf "$dir/solved/build/test-out" "$dir/solved/build/diff" "$dir/solved/build/out"
+echo "$steps" >"$dir/steps.txt"
+echo $targets $stress >"$dir/targets.txt"
+touch "$dir/ready"
+echo "$dir"
