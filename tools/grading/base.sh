@@ -23,16 +23,18 @@ flock 9
 if [ -f "$dir/ready" ]; then echo "$dir"; exit 0; fi
 rm -rf "$dir" "$cache"/base-*
 mkdir -p "$dir"
+: >"$dir/tests.tsv"
 echo "grade: preparing the base (the solution built with OPT=$opt, its tests run) in $dir" >&2
 
 tools/starter.sh "$dir/solved" 9 >/dev/null
 tools/starter.sh "$dir/stub" 1 >/dev/null
+chmod 755 "$dir/solved" "$dir/stub"
 rm -rf "$dir/solved/docs/diffs"   # they quote the solution; nothing builds from them
 
 # The files a submission may replace: C sources and headers under common/ and
 # steps/ that hold a solution region.
 git ls-files -z -- 'common/*.c' 'common/*.h' 'steps/*.c' 'steps/*.h' |
-  xargs -0 grep -l '/\* BEGIN SOLUTION step [0-9][0-9] \*/' | sort >"$dir/regions.txt"
+  xargs -0 grep -l '/\* BEGIN[ ]SOLUTION step [0-9][0-9] \*/' | sort >"$dir/regions.txt"
 
 steps=$(cd steps && ls -d [0-9][0-9]-* | sort)
 targets=$(for s in $steps; do echo "build/bin/$s build/tests/$s"; done)
@@ -44,12 +46,17 @@ make -C "$dir/solved" -s -j"$jobs" OPT="$opt" $targets $stress >"$dir/build.log"
   echo "grade: the solution does not build with OPT=$opt: see $dir/build.log" >&2; exit 1; }
 
 # Every test of every step (and of the stress suite), as the solution runs
-# them: STEP SUITE TEST STATUS, tab-separated.
+# them: STEP SUITE TEST STATUS SECONDS, tab-separated (tests.tsv). The wall
+# time a submission's test program gets: GRADE_SLOWER times the solution's,
+# plus a minute (limits.tsv: STEP SECONDS WALL).
+. tools/grading/tests.sh
+slower=${GRADE_SLOWER:-10}
 for s in $steps ${stress:+stress}; do
-  (cd "$dir/solved" && build/tests/$s --jobs 1 --json="$dir/$s.json" >"$dir/$s.log" 2>&1) || true
-  jq -r --arg s "$s" '.test_suites[] | .name as $suite | .tests[] | [$s, $suite, .name, .status] | @tsv' \
-    "$dir/$s.json"
-done >"$dir/tests.tsv"
+  (cd "$dir/solved" && build/tests/$s --jobs 1 --tap="$dir/$s.tap" >"$dir/$s.log" 2>&1) || true
+  tap_tsv "$dir/$s.tap" | awk -F'\t' -v OFS='\t' -v s="$s" '{ print s, $1, $2, $3, $4 }' >>"$dir/tests.tsv"
+  awk -F'\t' -v s="$s" -v k="$slower" '$1 == s { t += $5 } END { printf "%s\t%.2f\t%d\n", s, t, 60 + k * t }' \
+    "$dir/tests.tsv"
+done >"$dir/limits.tsv"
 failing=$(awk -F'\t' '$4 != "PASSED" { print "  " $1 " " $2 "::" $3 }' "$dir/tests.tsv")
 if [ -n "$failing" ]; then
   echo "grade: warning: the instructor's solution fails these tests (every submission will too):" >&2

@@ -85,65 +85,6 @@ built() {
   else safe_file "$t/build/tests/$2" && safe_file "$t/build/bin/$2"; fi
 }
 
-# run_tests TREE STEP: the step's test program in the sandbox, one job, a
-# per-test time limit; its report (Criterion's JSON) goes to a file of an
-# unpredictable name outside the sandbox, passed as descriptor 3, so nothing
-# the submission prints is read as a result.
-run_tests() {
-  local tree=$1 step=$2 report got st
-  report=$(mktemp "$res/.report.XXXXXXXXXX")
-  # The sandboxed user reopens it through /dev/fd/3 (Criterion opens the path):
-  # it may write the file, but cannot see the folder it is in.
-  sandbox_own "$report"
-  got=$(mktemp "$res/.got.XXXXXXXXXX")
-  mkdir -p "$res/logs"
-  sandbox_run "${GRADE_TEST_WALL:-300}" "${GRADE_TEST_CPU:-300}" "$res/logs/$step.log" "$tree" -- \
-    "build/tests/$step" --jobs 1 --timeout "${GRADE_TEST_TIMEOUT:-30}" --color=never --json=/dev/fd/3 3>"$report"
-  st=$?
-  if ! jq -e '.test_suites | type == "array"' "$report" >/dev/null 2>&1 ||
-     ! jq -r '.test_suites[] | .name as $s | .tests[] |
-              [$s, .name, .status, ((.messages // []) | join("\n"))] | @tsv' "$report" >"$got" 2>/dev/null; then
-    fail_step_tests "$step" "the test program stopped before writing its report: $(sandbox_status_text $st \
-      "${GRADE_TEST_WALL:-300}" "${GRADE_TEST_CPU:-300}") (logs/$step.log)"
-  else
-    tests_to_checks "$step" "$got"
-  fi
-  rm -f "$report" "$got"
-}
-
-# The unit-test checks of STEP (not its hidden scenes) all fail with WHY.
-fail_step_tests() {
-  local c
-  for c in $(GRADE_PLAN=/dev/null step_checks "$1"); do check "$c" FAIL "$2"; done
-}
-
-# tests_to_checks STEP GOT: each expected test (the solution's list) looked up
-# in the report; a check passes when all its tests passed. A test missing from
-# the report failed ("did not run").
-tests_to_checks() {
-  awk -F'\t' -v s="$1" -v it="$IMAGE_TEST" -v details="$res/details" '
-    function key(suite, test) { return s "/" (suite == "image" && test == it ? "image-test" : suite) }
-    FILENAME == ARGV[1] { st[$1 "\t" $2] = $3; msg[$1 "\t" $2] = $4; next }
-    $1 != s { next }
-    {
-      c = key($2, $3); if (!(c in n)) order[++k] = c
-      n[c]++
-      status = ($2 "\t" $3) in st ? st[$2 "\t" $3] : "DID NOT RUN"
-      if (status == "PASSED") next
-      bad[c]++; if (bad[c] <= 3) names[c] = names[c] (bad[c] > 1 ? ", " : "") $3
-      f = c; gsub("/", "_", f); f = details "/" f ".txt"
-      m = msg[$2 "\t" $3]; gsub(/\\n/, "\n    ", m)
-      printf "%s: %s\n    %s\n", $3, status, (m == "" ? "(no message)" : m) >> f
-    }
-    END {
-      for (i = 1; i <= k; i++) {
-        c = order[i]
-        if (!bad[c]) printf "%s\tPASS\tall %d tests pass\n", c, n[c]
-        else printf "%s\tFAIL\t%d of %d tests fail: %s%s\n", c, bad[c], n[c], names[c], (bad[c] > 3 ? ", ..." : "")
-      }
-    }' "$2" "$GRADE_BASE/tests.tsv" >>"$res/checks.tsv"
-}
-
 # The step's tolerance for pictures: images/STEP.tol ("tol fraction [max]",
 # tol and max in 1/255) or the image test's defaults.
 step_tolerance() {
@@ -171,13 +112,16 @@ image_pictures() {
 }
 
 # run_hidden TREE STEP: each hidden scene of STEP (GRADE_PLAN: CHECK STEP
-# SCENE MODE SEED REFS), rendered by the submission's binary in the sandbox
-# and compared with the solution's render(s).
+# SCENE MODE SEED COST REFS), rendered by the submission's binary in the
+# sandbox (GRADE_SLOWER times the solution's time, at least 10 s) and compared
+# with the solution's render(s).
 run_hidden() {
-  local tree=$1 step=$2 c s scene mode seed refs out line st wall=${GRADE_RENDER_WALL:-120}
+  local tree=$1 step=$2 c s scene mode seed cost refs out line st wall
   [ -s "$GRADE_PLAN" ] || return 0
-  while IFS=$'\t' read -r c s scene mode seed refs; do
+  while IFS=$'\t' read -r c s scene mode seed cost refs; do
     [ "$s" = "$step" ] || continue
+    wall=${GRADE_RENDER_WALL:-$(awk -v c="$cost" -v k="${GRADE_SLOWER:-10}" -v n="$GRADE_THREADS" \
+      'BEGIN { w = k * c / n; printf "%d", w < 10 ? 10 : w + 1 }')}
     out=$tree/.grade-out/$(slug "$c").pfm
     cp "$scene" "$tree/.grade-out/scene.scene" && sandbox_own "$tree/.grade-out"
     sandbox_run "$wall" $((wall * GRADE_THREADS)) "$res/logs/$(slug "$c").log" "$tree" -- \
@@ -190,7 +134,7 @@ run_hidden() {
       continue
     fi
     if [ "$mode" = noise ]; then
-      line=$(compare noise "${GRADE_NOISE_Z:-4}" "$res/pictures/$(slug "$c")" "$out" $refs)
+      line=$(compare noise "${GRADE_NOISE_RATIO:-2.5}" "$res/pictures/$(slug "$c")" "$out" $refs)
     else
       line=$(compare exact $(step_tolerance "$step") "$res/pictures/$(slug "$c")" "$out" $refs)
     fi
@@ -207,7 +151,7 @@ hidden_verdict() {
   local why
   if [ "${v[reason]:-}" = size ]; then why="the render is ${v[yours]}, expected ${v[expected]}"
   elif [ "$2" = noise ]; then
-    why="error against the mean of ${v[seeds]} solution renders: ${v[yours]}/255 rms, the solution's own noise ${v[noise]}/255 (allowed ${v[allowed]}/255)"
+    why="bias against ${v[seeds]} solution renders: ${v[ratio]} times the solution's own level (allowed ${v[allowed]}); rms difference ${v[rmse]}/255, the solution's noise ${v[noise]}/255"
   else
     why="${v[over]} channels over ${v[tol]}/255 ($(awk -v f="${v[fraction]}" 'BEGIN { printf "%.3f", 100 * f }')%, allowed $(awk -v f="${v[allowed_fraction]}" 'BEGIN { printf "%.3f", 100 * f }')%), max ${v[max]}/255 (allowed ${v[allowed_max]}/255)"
   fi

@@ -3,16 +3,16 @@
 # HIDDEN/NN-name.scene is graded at step NN, against the instructor's
 # solution's render of it, cached by content (the scene, the solution's
 # binary, the options). Steps with noise (GRADE_NOISY_STEPS, default 07 08)
-# get GRADE_SEEDS solution renders (seeds 1..K, default 4) and the student
+# get GRADE_SEEDS solution renders (seeds 1..K, default 8) and the student
 # renders with seed K+1; the others one render each, seed 1.
 # Usage: tools/grading/hidden.sh BASE HIDDEN CACHE > PLAN
-# PLAN lines: CHECK STEP SCENE MODE SEED REFS (tab-separated; REFS
-# space-separated .pfm paths).
+# PLAN lines: CHECK STEP SCENE MODE SEED COST REFS (tab-separated; COST the
+# solution's render in thread-seconds; REFS space-separated .pfm paths).
 set -euo pipefail
 
 [ $# = 3 ] || { echo "usage: tools/grading/hidden.sh BASE HIDDEN CACHE" >&2; exit 2; }
 base=$1 hidden=$2 cache=$3/hidden
-seeds=${GRADE_SEEDS:-4}
+seeds=${GRADE_SEEDS:-8}
 threads=${GRADE_THREADS:-$(nproc)}
 [ -d "$hidden" ] || { echo "grade: HIDDEN=$hidden is not a folder" >&2; exit 1; }
 mkdir -p "$cache"
@@ -39,12 +39,14 @@ for scene in "$hidden"/*.scene; do
   for ((k = first; k <= last; k++)); do
     ref=$cache/$key-seed$k.pfm
     if [ ! -f "$ref" ]; then
+      t0=$(date +%s.%N)
       "$bin" --scene "$cache/$key.scene" --threads "$threads" --seed "$k" --quiet -o "$ref.tmp.pfm" || {
         echo "grade: the solution cannot render hidden scene $scene (step $step)" >&2; exit 1; }
+      awk -v a="$t0" -v b="$(date +%s.%N)" -v n="$threads" 'BEGIN { printf "%.3f\n", (b - a) * n }' >"$ref.cost"
       mv "$ref.tmp.pfm" "$ref"
     fi
     refs+=("$ref")
   done
-  printf '%s/hidden/%s\t%s\t%s\t%s\t%s\t%s\n' "$step" "$stem" "$step" "$cache/$key.scene" "$mode" \
-    "$student_seed" "${refs[*]}"
+  printf '%s/hidden/%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$step" "$stem" "$step" "$cache/$key.scene" "$mode" \
+    "$student_seed" "$(cat "${refs[0]}.cost")" "${refs[*]}"
 done

@@ -14,6 +14,7 @@ here=$(cd "$(dirname "$0")" && pwd)
 . "$here/sandbox.sh"
 . "$here/unpack.sh"
 . "$here/checks.sh"
+. "$here/tests.sh"
 
 sub=$2
 name=$(submission_name "$sub")
@@ -60,8 +61,12 @@ info build_seconds "$(seconds_since "$tb")"
 for step in $(cat "$GRADE_BASE/steps.txt") stress; do
   grep -q "^$step	" "$GRADE_BASE/tests.tsv" || continue
   if built "$tree" "$step"; then
+    ts=$(now)
     run_tests "$tree" "$step"
+    info "tests_seconds $step" "$(seconds_since "$ts")"
+    ts=$(now)
     [ "$step" = stress ] || { image_pictures "$tree" "$step"; run_hidden "$tree" "$step"; }
+    info "hidden_seconds $step" "$(seconds_since "$ts")"
   else
     fail_step "$step" "did not build (the build log says why)"
   fi

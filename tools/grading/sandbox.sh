@@ -46,12 +46,20 @@ sandbox_base_args() {
 
 # sandbox_run WALL CPU LOG DIR -- CMD...: run CMD with DIR as its working
 # directory and its only writable folder (besides a private /tmp), stdout and
-# stderr to LOG; SANDBOX_RO lists more paths it may read (no spaces in them). Limits: WALL seconds of wall time, CPU seconds per process,
-# GRADE_MEM_MB of address space, GRADE_OUT_MB per file written (LOG
-# included), GRADE_NPROC processes. Prints nothing; returns CMD's status, 124
-# when the wall limit struck, 128+N when killed by signal N (24: CPU limit,
-# 25: file or output size limit).
+# stderr to LOG; SANDBOX_RO lists more paths it may read (no spaces in them).
+# Limits: WALL seconds of wall time, CPU seconds per process, GRADE_MEM_MB of
+# address space, GRADE_OUT_MB per file written (LOG included), GRADE_NPROC
+# processes. Prints nothing; returns CMD's status, 124 when the wall limit
+# struck, 128+N when killed by signal N (24: CPU limit, 25: file or output
+# size limit).
 sandbox_run() {
+  sandbox_start "$@"
+  wait "$SANDBOX_PID"
+}
+
+# sandbox_start ...: the same in the background; SANDBOX_PID is the process
+# to wait for (or to stop with SIGTERM, which ends everything inside).
+sandbox_start() {
   local wall=$1 cpu=$2 log=$3 dir=$4
   shift 5
   local limits=(prlimit --cpu="$cpu:$((cpu + 1))" --as=$((${GRADE_MEM_MB:-4096} << 20))
@@ -64,7 +72,8 @@ sandbox_run() {
                setpriv --reuid=$SANDBOX_NOBODY --regid=$SANDBOX_NOBODY --clear-groups --inh-caps=-all) ;;
     user) box=(bwrap --unshare-user $(sandbox_base_args) "${ro[@]}" --bind "$dir" "$dir" --chdir "$dir" --) ;;
   esac
-  ( cd "$dir" && exec timeout -k 2 "$wall" "${box[@]}" "${limits[@]}" "$@" ) >"$log" 2>&1 </dev/null
+  ( cd "$dir" && exec timeout -k 2 "$wall" "${box[@]}" "${limits[@]}" "$@" ) >"$log" 2>&1 </dev/null &
+  SANDBOX_PID=$!
 }
 
 # The folders above PATH, made traversable (bubblewrap makes them 0700).

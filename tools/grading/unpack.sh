@@ -41,14 +41,15 @@ submission_open() {
     rmdir "$dest/files" && ln -s "$src" "$dest/files"
     return 0
   fi
-  sandbox_own "$dest/files"
+  sandbox_own "$dest"
   local cmd
   case $2 in
     tar.gz) cmd=(tar -xzf "$src" -C "$dest/files" --no-same-owner --no-same-permissions) ;;
     zip) cmd=(unzip -q -o "$src" -d "$dest/files") ;;
-    "git bundle"|"git repository")
-      cmd=(sh -c 'git -c safe.directory="*" clone -q --no-hardlinks "$1" "$2/clone" &&
-                  git -C "$2/clone" archive HEAD | tar -x -C "$2/files" &&
+    "git repository")
+      cmd=(sh -c 'git -c safe.directory="*" --git-dir="$1" archive HEAD | tar -x -C "$2/files"' sh "$src" "$dest") ;;
+    "git bundle")
+      cmd=(sh -c 'git clone -q "$1" "$2/clone" && git -C "$2/clone" archive HEAD | tar -x -C "$2/files" &&
                   rm -rf "$2/clone"' sh "$src" "$dest") ;;
     *) echo "not a folder, .tar.gz, .zip, git repository or git bundle" >"$log"; return 1 ;;
   esac
