@@ -106,7 +106,7 @@ image_pictures() {
   local tree=$1 step=$2 out line
   out=$tree/build/test-out/$step.pfm
   safe_file "$out" || return 0
-  line=$(compare exact $(step_tolerance "$step") "$res/pictures/$step-image-test" "$out" \
+  line=$(compare exact $(step_tolerance "$step") "$res/pictures/$(slug "$step/image-test")" "$out" \
            "$GRADE_BASE/solved/images/$step.png") || return 0
   printf '%s/image-test\t%s\n' "$step" "$line" >>"$res/pictures.tsv"
 }

@@ -11,18 +11,27 @@ page_head() {
 <meta charset="utf-8">
 <title>$(printf '%s' "$1" | esc)</title>
 <style>
-body { font: 15px/1.45 system-ui, sans-serif; margin: 1.5em auto; max-width: 70em; padding: 0 1em; color: #222; }
+body { font: 15px/1.45 sans-serif; margin: 1em 2em; color: #222; background: #fafafa; }
 h1 small, h2 small { color: #666; font-weight: normal; }
 table { border-collapse: collapse; margin: .5em 0 1em; }
-td, th { border: 1px solid #ccc; padding: .2em .6em; text-align: left; vertical-align: top; }
-.PASS { color: #176b1f; font-weight: bold; } .FAIL { color: #b3161b; font-weight: bold; }
-pre { background: #f6f6f6; padding: .6em; overflow-x: auto; font-size: 13px; }
-figure { display: inline-block; margin: .4em 1em .8em 0; }
-figure img { image-rendering: pixelated; width: 240px; border: 1px solid #999; }
-figcaption { font-size: 13px; color: #444; max-width: 46em; }
-.pics { display: flex; gap: .5em; } .pics div { text-align: center; font-size: 13px; }
+td, th { border: 1px solid #ccc; padding: .1em .6em; text-align: left; vertical-align: top; }
+.PASS, .FAIL { font-weight: bold; padding: 0 .3em; border-radius: 3px; color: #fff; }
+.PASS { background: #2a7d2a; } .FAIL { background: #b3261e; }
+pre { white-space: pre-wrap; background: #eee; padding: .5em; font-size: 13px; }
+.pictures { display: flex; flex-wrap: wrap; gap: 12px; }
+figure { margin: 0; }
+figure img { display: block; image-rendering: pixelated; }
+figcaption { font-size: 13px; color: #555; }
+.flip .stack { display: grid; }
+.flip .stack img { grid-area: 1 / 1; }
+.flip .expected, .flip .to-yours { visibility: hidden; }
+.flip:hover .expected, .flip input:checked ~ .stack .expected { visibility: visible; }
+.flip input { position: absolute; opacity: 0; }
+.flip label { cursor: pointer; text-decoration: underline dotted; }
+.flip input:checked ~ figcaption .to-expected { display: none; }
+.flip input:checked ~ figcaption .to-yours { visibility: visible; }
 .bar { background: #4a78b5; height: 1em; display: inline-block; vertical-align: middle; }
-code { background: #f0f0f0; padding: 0 .2em; }
+code { background: #eee; padding: 0 .3em; }
 </style>
 </head>
 <body>
@@ -39,20 +48,27 @@ step_rows() {
     "$1/points.tsv" "$1/scores.tsv"
 }
 
-# picture_block DIR CHECK LINE STATUS: expected | yours | difference, the
-# numbers, and for a failing check the --trace command of its worst pixel.
+# picture_block DIR CHECK LINE STATUS: expected | yours | difference and a
+# flip between the first two (the markup of the student report,
+# tools/report.c), the numbers, and for a failing check the --trace command
+# of its worst pixel. Pictures at their own size.
 picture_block() {
-  local d=$1 c=$2 line=$3 status=$4 kv p step=${2%%/*}
+  local d=$1 c=$2 line=$3 status=$4 kv p step=${2%%/*} id
   declare -A v
   for kv in $line; do v[${kv%%=*}]=${kv#*=}; done
   p=pictures/$(slug "$c")
+  id=flip-$(slug "$c")
   [ -f "$d/$p-yours.png" ] || return 0
-  echo "<figure><div class=\"pics\">"
+  echo "<div class=\"pictures\">"
   for k in expected yours diff; do
-    printf '<div><img src="%s-%s.png" alt="%s: %s"><br>%s</div>\n' "$p" "$k" "$c" "$k" \
-      "$( [ $k = diff ] && echo difference || echo $k)"
+    printf '<figure><img src="%s-%s.png" alt="%s: %s"><figcaption>%s</figcaption></figure>\n' "$p" "$k" \
+      "$c" "$k" "$( [ $k = diff ] && echo 'difference (x8, red: over)' || echo $k)"
   done
-  echo "</div><figcaption>$(printf '%s' "$c" | esc)"
+  printf '<figure class="flip"><input type="checkbox" id="%s"><div class="stack">' "$id"
+  printf '<img class="yours" src="%s-yours.png" alt="yours"><img class="expected" src="%s-expected.png" alt="expected">' "$p" "$p"
+  printf '</div><figcaption><label for="%s">flip: hover or click to see <span class="to-expected">expected</span>' "$id"
+  echo '<span class="to-yours">yours</span></label></figcaption></figure></div>'
+  echo "<p>$(printf '%s' "$c" | esc)"
   if [ "$status" = FAIL ]; then
     local cmd="build/bin/$step"
     case $c in
@@ -62,7 +78,7 @@ picture_block() {
     echo ": the largest difference is at pixel (${v[worst_x]}, ${v[worst_y]}) (x from the left, y from the top);"
     echo "trace it: <code>$cmd --trace ${v[worst_x]} ${v[worst_y]}</code>"
   fi
-  echo "</figcaption></figure>"
+  echo "</p>"
 }
 
 student_page() {
@@ -168,12 +184,14 @@ class_steps() {
   echo "</table>"
 }
 
-# The checks that fail most often, with their most common reason.
+# The checks that fail most often, with their most common reason (reasons
+# compared with their numbers left out; one of them shown as it reads).
 class_failing() {
   echo "<h2>Most common failing checks</h2><table><tr><th>check</th><th>failing</th><th>most common reason</th></tr>"
-  awk -F'\t' '$3 != "PASS" { f[$2]++; r[$2 "\t" $5]++ }
+  awk -F'\t' '$3 != "PASS" { f[$2]++; k = $5; gsub(/[0-9][0-9.]*/, "#", k)
+                             r[$2 "\t" k]++; if (!(($2 "\t" k) in ex)) ex[$2 "\t" k] = $5 }
     END { for (c in f) { best = 0; why = ""
-            for (k in r) { split(k, p, "\t"); if (p[1] == c && r[k] > best) { best = r[k]; why = p[2] } }
+            for (k in r) { split(k, p, "\t"); if (p[1] == c && r[k] > best) { best = r[k]; why = ex[k] } }
             printf "%d\t%s\t%s\n", f[c], c, why } }' "$1/scores.tsv" | sort -t$'\t' -k1,1nr -k2,2 | head -n 15 |
     while IFS=$'\t' read -r k c why; do
       printf '<tr><td>%s</td><td>%d of %d</td><td>%s</td></tr>\n' "$(printf '%s' "$c" | esc)" "$k" "$2" \

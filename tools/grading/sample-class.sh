@@ -29,8 +29,9 @@ tools/starter.sh "$tmp/solved" 9 >/dev/null
 rm -rf "$out"
 mkdir -p "$out"
 n=0
-while read -r name form mutants; do
-  case $name in ''|'#'*|fails:) continue ;; esac
+while IFS= read -r line; do
+  case $line in ''|'#'*|[[:space:]]*) continue ;; esac   # comments, "fails:" lines
+  read -r name form mutants <<<"$line"
   tree=$tmp/work/$name
   mkdir -p "$tmp/work"
   rm -rf "$tree"

@@ -106,7 +106,7 @@ fail_step_tests() {
 # tests_to_checks STEP GOT: each expected test (the solution's list) looked up
 # in the report; a check passes when all its tests passed. A test missing from
 # the report failed ("did not run"). Failing tests' messages go to
-# details/CHECK.txt.
+# details/CHECK.txt (30 lines a test at most).
 tests_to_checks() {
   awk -F'\t' -v s="$1" -v it="$IMAGE_TEST" -v details="$res/details" '
     function key(suite, test) { return s "/" (suite == "image" && test == it ? "image-test" : suite) }
@@ -119,7 +119,9 @@ tests_to_checks() {
       if (status == "PASSED") next
       bad[c]++; if (bad[c] <= 3) names[c] = names[c] (bad[c] > 1 ? ", " : "") $3
       f = c; gsub("/", "_", f); f = details "/" f ".txt"
-      m = msg[$2 "\t" $3]; gsub(/\037/, "\n    ", m)
+      m = msg[$2 "\t" $3]; nl = split(m, ml, "\037"); m = ""
+      for (i = 1; i <= nl && i <= 30; i++) m = m (i > 1 ? "\n    " : "") ml[i]
+      if (nl > 30) m = m "\n    ... (" nl - 30 " more lines)"
       printf "%s: %s\n    %s\n", $3, status, (m == "" ? "(no message)" : m) >> f
       close(f)
     }
