@@ -16,7 +16,9 @@ opt=${GRADE_OPT:--O1}
 jobs=${GRADE_BUILD_JOBS:-$(nproc)}
 mkdir -p "$cache"
 
-key=$( { git ls-files -z | xargs -0 sha1sum 2>/dev/null; echo "OPT=$opt"; } | sha1sum | cut -c1-16)
+# The key: every tracked file but the prose (*.md), and the flags.
+key=$( { git ls-files -z -- . ':!:*.md' | xargs -0 sha1sum 2>/dev/null; echo "OPT=$opt"; } |
+       sha1sum | cut -c1-16)
 dir=$cache/base-$key
 exec 9>"$cache/base.lock"
 flock 9
@@ -42,7 +44,10 @@ targets=$(for s in $steps; do echo "build/bin/$s build/tests/$s"; done)
 # prerequisites).
 stress=$(ls tests/stress_*.c >/dev/null 2>&1 && echo build/tests/stress || true)
 [ -z "$stress" ] || [ ! -f tools/mistakes.c ] || stress="$stress build/bin/mistakes"
-make -C "$dir/solved" -s -j"$jobs" OPT="$opt" $targets $stress >"$dir/build.log" 2>&1 || {
+# The reference traces (tests/traces/, make trace-step N), where the tree has them.
+traces=$( [ -x tools/traces.sh ] && [ -f tests/traces/pixels ] && [ -f tools/trace-diff.c ] &&
+          echo build/bin/trace-diff || true)
+make -C "$dir/solved" -s -j"$jobs" OPT="$opt" $targets $stress $traces >"$dir/build.log" 2>&1 || {
   echo "grade: the solution does not build with OPT=$opt: see $dir/build.log" >&2; exit 1; }
 
 # Every test of every step (and of the stress suite), as the solution runs
@@ -53,17 +58,23 @@ make -C "$dir/solved" -s -j"$jobs" OPT="$opt" $targets $stress >"$dir/build.log"
 slower=${GRADE_SLOWER:-10}
 for s in $steps ${stress:+stress}; do
   (cd "$dir/solved" && build/tests/$s --jobs 1 --tap="$dir/$s.tap" >"$dir/$s.log" 2>&1) || true
-  tap_tsv "$dir/$s.tap" | awk -F'\t' -v OFS='\t' -v s="$s" '{ print s, $1, $2, $3, $4 }' >>"$dir/tests.tsv"
+  tap_times "$dir/$s.tap" | awk -F'\t' -v OFS='\t' -v s="$s" '{ print s, $1, $2, $3, $4 }' >>"$dir/tests.tsv"
   awk -F'\t' -v s="$s" -v k="$slower" '$1 == s { t += $5 } END { printf "%s\t%.2f\t%d\n", s, t, 60 + k * t }' \
     "$dir/tests.tsv"
 done >"$dir/limits.tsv"
-failing=$(awk -F'\t' '$4 != "PASSED" { print "  " $1 " " $2 "::" $3 }' "$dir/tests.tsv")
+failing=$(awk -F'\t' '$4 != "ok" { print "  " $1 " " $2 "::" $3 }' "$dir/tests.tsv")
 if [ -n "$failing" ]; then
   echo "grade: warning: the instructor's solution fails these tests (every submission will too):" >&2
   echo "$failing" >&2
 fi
+# The steps whose reference traces the solution matches (traces.txt).
+for s in $( [ -n "$traces" ] && echo $steps); do
+  grep -v '^#' tests/traces/pixels | awk -F'|' -v s="$s" '{ gsub(/ /, "", $1) } $1 == s' | grep -q . || continue
+  if (cd "$dir/solved" && tools/traces.sh compare build "$s" >/dev/null 2>&1); then echo "$s"
+  else echo "grade: warning: the solution does not match its own reference traces of $s (not graded)" >&2; fi
+done >"$dir/traces.txt"
 rm -rf "$dir/solved/build/test-out" "$dir/solved/build/diff" "$dir/solved/build/out"
 echo "$steps" >"$dir/steps.txt"
-echo $targets $stress >"$dir/targets.txt"
+echo $targets $stress $traces >"$dir/targets.txt"
 touch "$dir/ready"
 echo "$dir"

@@ -3,22 +3,18 @@
 # messages in RESULTS/details/SLUG.txt (docs/grading.md, "Checks").
 # Uses: res, name, GRADE_BASE, GRADE_PLAN, GRADE_COMPARE, GRADE_THREADS.
 
-# The image test, as Criterion names it; its check is STEP/image-test, apart
-# from the other tests of the suite "image" (step 01's image I/O).
-IMAGE_TEST=step_matches_its_reference_image
-
 slug() { printf '%s' "$1" | tr '/ ' '__'; }
 now() { date +%s.%N; }
 seconds_since() { awk -v a="$1" -v b="$(now)" 'BEGIN { printf "%.1f", b - a }'; }
 
 check() { printf '%s\t%s\t%s\n' "$1" "$2" "$3" >>"$res/checks.tsv"; }
 
-# The checks of STEP: its test suites (the image test apart), then its hidden
-# scenes.
+# The checks of STEP: its test suites in make test-step's order (by name,
+# the image test last), its reference traces, then its hidden scenes.
 step_checks() {
-  awk -F'\t' -v s="$1" -v it="$IMAGE_TEST" '$1 == s {
-      c = s "/" ($2 == "image" && $3 == it ? "image-test" : $2)
-      if (!(c in seen)) { seen[c] = 1; print c } }' "$GRADE_BASE/tests.tsv"
+  awk -F'\t' -v s="$1" '$1 == s && !seen[$2]++ { print ($2 == "reference_image") "\t" s "/" $2 }' \
+    "$GRADE_BASE/tests.tsv" | sort | cut -f2
+  grep -qx "$1" "$GRADE_BASE/traces.txt" 2>/dev/null && echo "$1/traces"
   [ -s "$GRADE_PLAN" ] && awk -F'\t' -v s="$1" '$2 == s { print $1 }' "$GRADE_PLAN"
   return 0
 }
@@ -93,6 +89,24 @@ step_tolerance() {
   echo "$t ${f:-0.001} ${m:-16}"
 }
 
+# run_traces TREE STEP: the step's reference traces (make trace-step N) in the
+# sandbox: the check passes when every traced pixel agrees; the first lines
+# that differ are the details.
+run_traces() {
+  local tree=$1 step=$2 log st
+  grep -qx "$step" "$GRADE_BASE/traces.txt" 2>/dev/null || return 0
+  log=$res/logs/$step.traces.log
+  sandbox_run "${GRADE_TRACE_WALL:-120}" "${GRADE_TRACE_WALL:-120}" "$log" "$tree" -- \
+    tools/traces.sh compare build "$step"
+  st=$?
+  if [ $st = 0 ]; then check "$step/traces" PASS "every reference trace agrees"
+  else
+    check "$step/traces" FAIL "$( [ $st = 1 ] && echo "a trace differs from the reference (make trace-step ${step%%-*})" ||
+      echo "the traces $(sandbox_status_text $st "${GRADE_TRACE_WALL:-120}" "${GRADE_TRACE_WALL:-120}")")"
+    head -n 60 "$log" >"$res/details/$(slug "$step/traces").txt"
+  fi
+}
+
 # compare MODE ARGS...: the grader's picture comparison, outside the sandbox,
 # under limits; prints its one line of results.
 compare() {
@@ -106,22 +120,22 @@ image_pictures() {
   local tree=$1 step=$2 out line
   out=$tree/build/test-out/$step.pfm
   safe_file "$out" || return 0
-  line=$(compare exact $(step_tolerance "$step") "$res/pictures/$(slug "$step/image-test")" "$out" \
+  line=$(compare exact $(step_tolerance "$step") "$res/pictures/$(slug "$step/reference_image")" "$out" \
            "$GRADE_BASE/solved/images/$step.png") || return 0
-  printf '%s/image-test\t%s\n' "$step" "$line" >>"$res/pictures.tsv"
+  printf '%s/reference_image\t%s\n' "$step" "$line" >>"$res/pictures.tsv"
 }
 
 # run_hidden TREE STEP: each hidden scene of STEP (GRADE_PLAN: CHECK STEP
 # SCENE MODE SEED COST REFS), rendered by the submission's binary in the
-# sandbox (GRADE_SLOWER times the solution's time, at least 10 s) and compared
-# with the solution's render(s).
+# sandbox (GRADE_SLOWER times the solution's time, at least GRADE_RENDER_MIN,
+# 5 s) and compared with the solution's render(s).
 run_hidden() {
   local tree=$1 step=$2 c s scene mode seed cost refs out line st wall
   [ -s "$GRADE_PLAN" ] || return 0
   while IFS=$'\t' read -r c s scene mode seed cost refs; do
     [ "$s" = "$step" ] || continue
     wall=${GRADE_RENDER_WALL:-$(awk -v c="$cost" -v k="${GRADE_SLOWER:-10}" -v n="$GRADE_THREADS" \
-      'BEGIN { w = k * c / n; printf "%d", w < 10 ? 10 : w + 1 }')}
+      -v m="${GRADE_RENDER_MIN:-5}" 'BEGIN { w = k * c / n; printf "%d", w < m ? m : w + 1 }')}
     out=$tree/.grade-out/$(slug "$c").pfm
     cp "$scene" "$tree/.grade-out/scene.scene" && sandbox_own "$tree/.grade-out"
     sandbox_run "$wall" $((wall * GRADE_THREADS)) "$res/logs/$(slug "$c").log" "$tree" -- \

@@ -65,7 +65,7 @@ for step in $(cat "$GRADE_BASE/steps.txt") stress; do
     run_tests "$tree" "$step"
     info "tests_seconds $step" "$(seconds_since "$ts")"
     ts=$(now)
-    [ "$step" = stress ] || { image_pictures "$tree" "$step"; run_hidden "$tree" "$step"; }
+    [ "$step" = stress ] || { run_traces "$tree" "$step"; image_pictures "$tree" "$step"; run_hidden "$tree" "$step"; }
     info "hidden_seconds $step" "$(seconds_since "$ts")"
   else
     fail_step "$step" "did not build (the build log says why)"

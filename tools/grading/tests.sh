@@ -1,35 +1,18 @@
-# Sourced by tools/grading/base.sh and one.sh: a step's unit tests, run as
-# Criterion runs them, read from Criterion's TAP report (docs/grading.md,
-# "Checks"). Uses res, GRADE_BASE, GRADE_SLOWER, check() and slug().
+# Sourced by tools/grading/base.sh and one.sh: a step's tests, run as
+# Criterion runs them, read from Criterion's TAP report with tests/results.awk
+# (the verdicts make test-step prints; docs/grading.md, "Checks"). Uses res,
+# GRADE_BASE, GRADE_SLOWER, check() and slug().
 
-# tap_tsv FILE: one line per test of a TAP report: SUITE TEST STATUS SECONDS
-# MESSAGE (tab-separated; the message's lines joined by \037). STATUS is
-# PASSED, SKIPPED, FAILED, TIMED OUT or CRASHED.
-tap_tsv() {
-  awk '
-    function flush() { if (name != "") printf "%s\t%s\t%s\t%s\t%s\n", suite, test, status, secs, msg; name = "" }
-    /^(not )?ok - / {
-      flush(); ok = $1 == "ok"
-      line = $0; sub(/^(not )?ok - /, "", line)
-      name = line; sub(/[ \t].*/, "", name); rest = substr(line, length(name) + 1)
-      suite = name; sub(/::.*/, "", suite); test = name; sub(/^[^:]*::/, "", test)
-      secs = 0; if (match(rest, /\([0-9.]+s\)/)) secs = substr(rest, RSTART + 1, RLENGTH - 3)
-      msg = ""
-      if (ok) status = rest ~ /# SKIP/ ? "SKIPPED" : "PASSED"
-      else if (rest ~ /^ *timed out/) status = "TIMED OUT"
-      else if (rest ~ /unexpected signal/) { status = "CRASHED"; msg = rest; sub(/^ */, "", msg) }
-      else status = "FAILED"
-      next
-    }
-    name != "" && /^  - / { l = $0; sub(/^  - /, "", l); sub(/ *\|\+$/, "", l); msg = msg (msg == "" ? "" : "\037") l; next }
-    name != "" && /^      / { l = $0; sub(/^      /, "", l); gsub(/\t/, " ", l); msg = msg "\037  " l; next }
-    END { flush() }' "$1"
+# tap_times FILE: each test of a TAP report: SUITE TEST STATUS SECONDS
+# (tab-separated; STATUS ok or not ok).
+tap_times() {
+  sed -n 's/^\(\(not \)\{0,1\}ok\) - \([^: ]*\)::\([^ ]*\) .*(\([0-9.]*\)s).*/\3\t\4\t\1\t\5/p' "$1"
 }
 
 # The test's own time limit: GRADE_SLOWER (10) times the solution's time, at
-# least GRADE_TEST_MIN (10) seconds.
+# least GRADE_TEST_MIN (5) seconds.
 test_timeouts() {
-  awk -F'\t' -v s="$1" -v k="${GRADE_SLOWER:-10}" -v m="${GRADE_TEST_MIN:-10}" \
+  awk -F'\t' -v s="$1" -v k="${GRADE_SLOWER:-10}" -v m="${GRADE_TEST_MIN:-5}" \
     '$1 == s { t = k * $5; printf "%s::%s %d\n", $2, $3, t < m ? m : t + 1 }' "$GRADE_BASE/tests.tsv"
 }
 
@@ -49,7 +32,7 @@ watch_tests() {
       "[RUN ] "*) line=${line#"[RUN ] "}; line=${line%%[[:space:]]*}
                   now=$(date +%s)
                   if [ "$line" != "$cur" ]; then cur=$line since=$now
-                  elif [ $((now - since)) -gt "${limits[$cur]:-${GRADE_TEST_MIN:-10}}" ]; then
+                  elif [ $((now - since)) -gt "${limits[$cur]:-${GRADE_TEST_MIN:-5}}" ]; then
                     kill -TERM "$pid" 2>/dev/null; echo "$cur"; return
                   fi ;;
       *) cur="" ;;
@@ -89,12 +72,17 @@ run_tests() {
     fail_step_tests "$step" "the test program stopped before writing its report: $(sandbox_status_text \
       $st "$wall" "$wall") (logs/${log##*/})"
   else
-    tap_tsv "$report" | awk -F'\t' -v OFS='\t' -v stopped="|$stopped|" \
-      '{ n = $1 "/" $2; if (index(stopped, "|" n "|")) { $3 = "TIMED OUT"; $5 = "ran past its limit: stopped" } print }' \
-      >"$report.tsv"
-    tests_to_checks "$step" "$report.tsv"
+    # A test stopped at its limit was skipped in the last run: report it as
+    # timed out, as Criterion reports a test past its own .timeout.
+    local t
+    for t in ${stopped//|/ }; do
+      sed -i "s|^ok - ${t/\//::} .*# SKIP.*|not ok - ${t/\//::} timed out (stopped at its limit)|" "$report"
+    done
+    awk -v name="$step" -v binary="build/tests/$step" -v rc="$st" -v verbose=0 -v out="$report.json" \
+      -v counts=/dev/null -f "$GRADE_BASE/solved/tests/results.awk" "$report" >/dev/null
+    results_to_checks "$step" "$report.json"
   fi
-  rm -f "$report" "$report.tsv"
+  rm -f "$report" "$report.json"
 }
 
 # The unit-test checks of STEP (not its hidden scenes) all fail with WHY.
@@ -103,33 +91,25 @@ fail_step_tests() {
   for c in $(GRADE_PLAN=/dev/null step_checks "$1"); do check "$c" FAIL "$2"; done
 }
 
-# tests_to_checks STEP GOT: each expected test (the solution's list) looked up
-# in the report; a check passes when all its tests passed. A test missing from
-# the report failed ("did not run"). Failing tests' messages go to
-# details/CHECK.txt (30 lines a test at most).
-tests_to_checks() {
-  awk -F'\t' -v s="$1" -v it="$IMAGE_TEST" -v details="$res/details" '
-    function key(suite, test) { return s "/" (suite == "image" && test == it ? "image-test" : suite) }
-    FILENAME == ARGV[1] { st[$1 "\t" $2] = $3; msg[$1 "\t" $2] = $5; next }
-    $1 != s { next }
-    {
-      c = key($2, $3); if (!(c in n)) order[++k] = c
-      n[c]++
-      status = ($2 "\t" $3) in st ? st[$2 "\t" $3] : "DID NOT RUN"
-      if (status == "PASSED") next
-      bad[c]++; if (bad[c] <= 3) names[c] = names[c] (bad[c] > 1 ? ", " : "") $3
-      f = c; gsub("/", "_", f); f = details "/" f ".txt"
-      m = msg[$2 "\t" $3]; nl = split(m, ml, "\037"); m = ""
-      for (i = 1; i <= nl && i <= 30; i++) m = m (i > 1 ? "\n    " : "") ml[i]
-      if (nl > 30) m = m "\n    ... (" nl - 30 " more lines)"
-      printf "%s: %s\n    %s\n", $3, status, (m == "" ? "(no message)" : m) >> f
-      close(f)
-    }
-    END {
-      for (i = 1; i <= k; i++) {
-        c = order[i]
-        if (!bad[c]) printf "%s\tPASS\tall %d tests pass\n", c, n[c]
-        else printf "%s\tFAIL\t%d of %d tests fail: %s%s\n", c, bad[c], n[c], names[c], (bad[c] > 3 ? ", ..." : "")
-      }
-    }' "$2" "$GRADE_BASE/tests.tsv" >>"$res/checks.tsv"
+# results_to_checks STEP JSON: a check per suite of the solution's run, from
+# the results file (tests/results.awk): it passes when all its tests ran and
+# passed; its reason is the verdict line make test-step prints; the failing
+# tests' messages go to details/CHECK.txt (30 lines a test at most).
+results_to_checks() {
+  local step=$1 json=$2 suite want got pass why
+  for suite in $(GRADE_PLAN=/dev/null step_checks "$step" | sed 's|.*/||'); do
+    want=$(awk -F'\t' -v s="$step" -v u="$suite" '$1 == s && $2 == u' "$GRADE_BASE/tests.tsv" | grep -c .)
+    IFS=$'\t' read -r got pass why < <(jq -r --arg u "$suite" \
+      '[.checks[] | select(.check == $u)][0] // {tests: 0, pass: false, verdict: "did not run"} |
+       [.tests, .pass, .verdict] | @tsv' "$json")
+    if [ "$got" -lt "$want" ]; then
+      why="$why; $((want - got)) of the solution's $want tests did not run"; pass=false
+    fi
+    if [ "$pass" = true ]; then check "$step/$suite" PASS "$why"; else check "$step/$suite" FAIL "$why"; fi
+    jq -r --arg u "$suite" '.checks[] | select(.check == $u) | .failures[] |
+        "\(.test): \(.status)", (.messages | join("\n") | split("\n") | .[0:30][] | "    " + .),
+        (if (.messages | join("\n") | split("\n") | length) > 30 then "    ..." else empty end)' "$json" \
+      >"$res/details/$(slug "$step/$suite").txt"
+    [ -s "$res/details/$(slug "$step/$suite").txt" ] || rm -f "$res/details/$(slug "$step/$suite").txt"
+  done
 }
