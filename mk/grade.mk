@@ -58,4 +58,10 @@ test-grade-slurm: test-grade
 	-@$(call need_debs,$(DEB_GRADE_SLURM))
 	@tools/grading/slurm-test.sh $(GRADE_TEST)/class $(GRADE_SAMPLE_HIDDEN) $(GRADE_TEST)/out
 
-.PHONY: grade grade-deps gradescope sample-class grade-test-deps test-grade test-grade-slurm
+# Two submissions through GNU parallel --sshlogin on two host names, with a
+# stand-in for ssh; compared with the local grading. Not in make test.
+test-grade-ssh: test-grade
+	@tools/grading/ssh-test.sh $(GRADE_TEST)/class $(GRADE_SAMPLE_HIDDEN) $(GRADE_TEST)/out
+
+.PHONY: grade grade-deps gradescope sample-class grade-test-deps test-grade test-grade-slurm \
+        test-grade-ssh
