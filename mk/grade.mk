@@ -37,7 +37,7 @@ GRADE_TEST := $(BUILD)/grade-test
 GRADE_SAMPLE_HIDDEN := tools/grading/sample-hidden
 grade-test-deps: grade-deps
 	-@$(call need_debs,$(DEB_GRADE_PAGES))
-test-grade: grade-test-deps $(BUILD)/bin/grade-compare
+test-grade: grade-test-deps $(BUILD)/bin/grade-compare $(BUILD)/bin/report-check
 	@if [ ! -x tools/mutate.sh ]; then \
 	  echo "SKIP  grading the sample class: tools/mutate.sh (make mutants) is not in this tree"; exit 0; fi; \
 	t0=$$(date +%s); \
@@ -48,7 +48,7 @@ test-grade: grade-test-deps $(BUILD)/bin/grade-compare
 	st=$${PIPESTATUS[0]}; \
 	if [ $$st = 0 ]; then echo "PASS  grading the sample class: every verdict as expected ($$(($$(date +%s) - t0)) s)"; \
 	else echo "FAIL  grading the sample class:"; cat $(GRADE_TEST)/check.log; exit 1; fi; \
-	tools/grading/page-test.sh $(GRADE_TEST)/out correct larger-root && \
+	REPORT_CHECK=$(BUILD)/bin/report-check tools/grading/page-test.sh $(GRADE_TEST)/out correct larger-root && \
 	tools/gradescope/test.sh $(GRADE_TEST)/class $(GRADE_TEST)/out area-no-cos
 test: test-grade
 

@@ -3,6 +3,8 @@
 
 esc() { sed -e 's/&/\&amp;/g' -e 's/</\&lt;/g' -e 's/>/\&gt;/g' -e 's/"/\&quot;/g'; }
 
+# The student report's look (tools/report.html's style: verdicts, pictures,
+# the flip), and the few rules the grader's tables and bars add.
 page_head() {
   cat <<EOF
 <!doctype html>
@@ -11,27 +13,13 @@ page_head() {
 <meta charset="utf-8">
 <title>$(printf '%s' "$1" | esc)</title>
 <style>
-body { font: 15px/1.45 sans-serif; margin: 1em 2em; color: #222; background: #fafafa; }
+EOF
+  sed -n '/<style>/,/<\/style>/p' "$GRADE_BASE/solved/tools/report.html" | sed '1d;$d'
+  cat <<'EOF'
 h1 small, h2 small { color: #666; font-weight: normal; }
-table { border-collapse: collapse; margin: .5em 0 1em; }
-td, th { border: 1px solid #ccc; padding: .1em .6em; text-align: left; vertical-align: top; }
-.PASS, .FAIL { font-weight: bold; padding: 0 .3em; border-radius: 3px; color: #fff; }
-.PASS { background: #2a7d2a; } .FAIL { background: #b3261e; }
-pre { white-space: pre-wrap; background: #eee; padding: .5em; font-size: 13px; }
-.pictures { display: flex; flex-wrap: wrap; gap: 12px; }
-figure { margin: 0; }
-figure img { display: block; image-rendering: pixelated; }
-figcaption { font-size: 13px; color: #555; }
-.flip .stack { display: grid; }
-.flip .stack img { grid-area: 1 / 1; }
-.flip .expected, .flip .to-yours { visibility: hidden; }
-.flip:hover .expected, .flip input:checked ~ .stack .expected { visibility: visible; }
-.flip input { position: absolute; opacity: 0; }
-.flip label { cursor: pointer; text-decoration: underline dotted; }
-.flip input:checked ~ figcaption .to-expected { display: none; }
-.flip input:checked ~ figcaption .to-yours { visibility: visible; }
+table.grade { border-collapse: collapse; margin: 0.5em 0 1em; }
+table.grade td, table.grade th { border: 1px solid #ccc; padding: 0.1em 0.6em; text-align: left; vertical-align: top; }
 .bar { background: #4a78b5; height: 1em; display: inline-block; vertical-align: middle; }
-code { background: #eee; padding: 0 .3em; }
 </style>
 </head>
 <body>
@@ -89,7 +77,7 @@ student_page() {
   page_head "$st: $total / $max"
   echo "<p><a href=\"../../index.html\">class</a></p>"
   echo "<h1>$(printf '%s' "$st" | esc) <small>$total / $max points</small></h1>"
-  echo "<table>"
+  echo "<table class='grade'>"
   for k in kind source host sandbox build build_seconds seconds; do
     printf '<tr><th>%s</th><td>%s</td></tr>\n' "${k//_/ }" "$(info_get "$d" $k | esc)"
   done
@@ -125,10 +113,11 @@ student_step() {
   local out=$1 st=$2 s=$3 d=$1/students/$2 c status pts max why got all
   got=$(step_rows "$out" "$st" "$s" | awk -F'\t' '{ g += $3; m += $4 } END { print g + 0 "/" m + 0 }')
   echo "<h2 id=\"$s\">$s <small>${got%/*} / ${got#*/} points</small></h2>"
-  echo "<table><tr><th>check</th><th>verdict</th><th>points</th><th>why</th></tr>"
+  echo "<table class='grade'><tr><th>check</th><th>verdict</th><th>points</th><th>why</th></tr>"
   while IFS=$'\t' read -r c status pts max why; do
-    printf '<tr><td>%s</td><td class="%s">%s</td><td>%s / %s</td><td>%s</td></tr>\n' \
-      "$(printf '%s' "$c" | esc)" "$status" "$status" "$pts" "$max" "$(printf '%s' "$why" | esc)"
+    printf '<tr><td>%s</td><td><span class="%s">%s</span></td><td>%s / %s</td><td>%s</td></tr>\n' \
+      "$(printf '%s' "$c" | esc)" "$(echo "$status" | tr A-Z a-z)" "$status" "$pts" "$max" \
+      "$(printf '%s' "$why" | esc)"
   done < <(step_rows "$out" "$st" "$s")
   echo "</table>"
   while IFS=$'\t' read -r c status pts max why; do
@@ -160,7 +149,7 @@ class_page() {
 
 # Totals in ten bins of the maximum, as bars.
 class_histogram() {
-  echo "<h2>Scores</h2><table><tr><th>points</th><th>students</th></tr>"
+  echo "<h2>Scores</h2><table class='grade'><tr><th>points</th><th>students</th></tr>"
   awk -F'\t' -v max="$2" '{ t[$1] += $4 }
     END { for (w in t) { b = max > 0 ? int(10 * t[w] / max) : 10; if (b > 9) b = 9; h[b]++; if (h[b] > top) top = h[b] }
           for (b = 0; b < 10; b++) printf "<tr><td>%g &ndash; %g%s</td><td><span class=\"bar\" style=\"width:%dpx\"></span> %d</td></tr>\n",
@@ -170,7 +159,7 @@ class_histogram() {
 
 # Per step: students passing every check of it, and each check's pass rate.
 class_steps() {
-  echo "<h2>Steps</h2><table><tr><th>step</th><th>passing every check</th><th>checks (pass rate)</th></tr>"
+  echo "<h2>Steps</h2><table class='grade'><tr><th>step</th><th>passing every check</th><th>checks (pass rate)</th></tr>"
   awk -F'\t' -v n="$2" '{ split($2, p, "/"); s = p[1]
       if (!(s in seen)) { seen[s] = 1; order[++k] = s }
       if (!(($2) in cseen)) { cseen[$2] = 1; corder[s] = corder[s] " " $2 }
@@ -188,7 +177,7 @@ class_steps() {
 # The checks that fail most often, with their most common reason (reasons
 # compared with their numbers left out; one of them shown as it reads).
 class_failing() {
-  echo "<h2>Most common failing checks</h2><table><tr><th>check</th><th>failing</th><th>most common reason</th></tr>"
+  echo "<h2>Most common failing checks</h2><table class='grade'><tr><th>check</th><th>failing</th><th>most common reason</th></tr>"
   awk -F'\t' '$3 != "PASS" { f[$2]++; k = $5; gsub(/[0-9][0-9.]*/, "#", k)
                              r[$2 "\t" k]++; if (!(($2 "\t" k) in ex)) ex[$2 "\t" k] = $5 }
     END { for (c in f) { best = 0; why = ""
@@ -202,7 +191,7 @@ class_failing() {
 }
 
 class_students() {
-  echo "<h2>Students</h2><table><tr><th>student</th><th>points</th><th>failing checks</th></tr>"
+  echo "<h2>Students</h2><table class='grade'><tr><th>student</th><th>points</th><th>failing checks</th></tr>"
   awk -F'\t' '{ t[$1] += $4; if ($3 != "PASS") f[$1] = f[$1] (f[$1] == "" ? "" : ", ") $2; w[$1] = 1 }
     END { for (s in w) printf "%s\t%s\t%s\n", s, t[s], f[s] }' "$1/scores.tsv" | sort |
     while IFS=$'\t' read -r s t f; do

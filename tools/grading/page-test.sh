@@ -3,9 +3,11 @@
 # "Outputs"): headless Chromium loads the class page and the pages of the
 # students named, each from a copy with a script that counts the pictures the
 # browser decoded (the pages themselves have none); every <img> of a page
-# must be shown, and the class page must link every student. Screenshots go
-# to OUT/screenshots/. Without chromium it says SKIP and exits 0.
-# Usage: tools/grading/page-test.sh OUT STUDENT...
+# must be decoded, and, with REPORT_CHECK (the student report's checker,
+# tools/report-check.c), found pixel for pixel in the page's screenshot. The
+# class page must link every student. Screenshots go to OUT/screenshots/.
+# Without chromium it says SKIP and exits 0.
+# Usage: [REPORT_CHECK=build/bin/report-check] tools/grading/page-test.sh OUT STUDENT...
 set -uo pipefail
 
 [ $# -ge 2 ] || { echo "usage: tools/grading/page-test.sh OUT STUDENT..." >&2; exit 2; }
@@ -23,7 +25,7 @@ flags=(--headless --no-sandbox --disable-gpu --disable-quic --no-first-run --dis
        --disable-component-update --disable-sync --hide-scrollbars --user-data-dir="$profile")
 mkdir -p "$out/screenshots"
 
-# check NAME PAGE: one verdict line; 1 when a picture is not shown.
+# check NAME PAGE HEIGHT: one verdict line; 1 when a picture is not shown.
 check() {
   local name=$1 page=$2 copy dom want loaded total broken
   copy=${page%.html}.check.html
@@ -35,8 +37,8 @@ document.body.setAttribute("data-loaded", n); document.body.setAttribute("data-b
 </script></body>|' "$page" >"$copy"
   dom=$(timeout 60 "$browser" "${flags[@]}" --virtual-time-budget=5000 --dump-dom "file://$copy" 2>/dev/null)
   rm -f "$copy"
-  timeout 60 "$browser" "${flags[@]}" --window-size=1400,3000 --screenshot="$out/screenshots/$name.png" \
-    "file://$page" >/dev/null 2>&1
+  timeout 120 "$browser" "${flags[@]}" --force-device-scale-factor=1 --window-size=1400,"$3" \
+    --screenshot="$out/screenshots/$name.png" "file://$page" >/dev/null 2>&1
   want=$(grep -o '<img ' "$page" | grep -c .)
   total=$(sed -n 's/.*<body[^>]* data-images="\([0-9]*\)".*/\1/p' <<<"$dom")
   loaded=$(sed -n 's/.*<body[^>]* data-loaded="\([0-9]*\)".*/\1/p' <<<"$dom")
@@ -46,14 +48,18 @@ document.body.setAttribute("data-loaded", n); document.body.setAttribute("data-b
   elif [ "$total" != "$want" ] || [ "$loaded" != "$want" ]; then
     echo "FAIL  grader pages in a browser: $name: $loaded of $want pictures shown; not shown: $broken"; return 1
   fi
+  if [ -n "${REPORT_CHECK:-}" ] && [ "$want" -gt 0 ] &&
+     ! shown=$("$REPORT_CHECK" "$page" "$out/screenshots/$name.png" 2>&1); then
+    echo "FAIL  grader pages in a browser: $name: ${shown#report-check: }"; return 1
+  fi
   echo "PASS  grader pages in a browser: $name: all $want pictures shown (screenshots/$name.png)"
 }
 
 status=0
-check class "$out/index.html" || status=1
+check class "$out/index.html" 3000 || status=1
 for st in "$@"; do
   grep -q "href=\"students/$st/index.html\"" "$out/index.html" ||
     { echo "FAIL  grader pages in a browser: the class page does not link $st"; status=1; }
-  check "$st" "$out/students/$st/index.html" || status=1
+  check "$st" "$out/students/$st/index.html" 16000 || status=1
 done
 exit $status
