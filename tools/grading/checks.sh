@@ -9,11 +9,16 @@ seconds_since() { awk -v a="$1" -v b="$(now)" 'BEGIN { printf "%.1f", b - a }'; 
 
 check() { printf '%s\t%s\t%s\n' "$1" "$2" "$3" >>"$res/checks.tsv"; }
 
-# The checks of STEP: its test suites in make test-step's order (by name,
-# the image test last), its reference traces, then its hidden scenes.
-step_checks() {
+# The test suites of STEP in make test-step's order (by name, the image test
+# last), as checks: STEP/SUITE.
+step_suites() {
   awk -F'\t' -v s="$1" '$1 == s && !seen[$2]++ { print ($2 == "reference_image") "\t" s "/" $2 }' \
     "$GRADE_BASE/tests.tsv" | sort | cut -f2
+}
+
+# The checks of STEP: its test suites, its reference traces, its hidden scenes.
+step_checks() {
+  step_suites "$1"
   grep -qx "$1" "$GRADE_BASE/traces.txt" 2>/dev/null && echo "$1/traces"
   [ -s "$GRADE_PLAN" ] && awk -F'\t' -v s="$1" '$2 == s { print $1 }' "$GRADE_PLAN"
   return 0

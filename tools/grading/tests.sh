@@ -88,7 +88,7 @@ run_tests() {
 # The unit-test checks of STEP (not its hidden scenes) all fail with WHY.
 fail_step_tests() {
   local c
-  for c in $(GRADE_PLAN=/dev/null step_checks "$1"); do check "$c" FAIL "$2"; done
+  for c in $(step_suites "$1"); do check "$c" FAIL "$2"; done
 }
 
 # results_to_checks STEP JSON: a check per suite of the solution's run, from
@@ -97,7 +97,7 @@ fail_step_tests() {
 # tests' messages go to details/CHECK.txt (30 lines a test at most).
 results_to_checks() {
   local step=$1 json=$2 suite want got pass why
-  for suite in $(GRADE_PLAN=/dev/null step_checks "$step" | sed 's|.*/||'); do
+  for suite in $(step_suites "$step" | sed 's|.*/||'); do
     want=$(awk -F'\t' -v s="$step" -v u="$suite" '$1 == s && $2 == u' "$GRADE_BASE/tests.tsv" | grep -c .)
     IFS=$'\t' read -r got pass why < <(jq -r --arg u "$suite" \
       '[.checks[] | select(.check == $u)][0] // {tests: 0, pass: false, verdict: "did not run"} |
