@@ -3,9 +3,14 @@
 # Variables: name, binary, rc (its exit status), verbose (0/1), out (the
 # JSON's path), counts (a file for "tested passing failing crashing savings
 # bad"). Run by tests/run.sh and by the grader (tools/grading/tests.sh).
-function esc(s) {
+function esc(s,    i, c, p) {
   gsub(/\\/, "\\\\\\\\", s); gsub(/"/, "\\\"", s); gsub(/\t/, "\\t", s); gsub(/\r/, "", s)
   gsub(/\n/, "\\n", s)
+  # Other control bytes (a test may quote one) as \u00XX: JSON allows none raw.
+  for (i = 1; i < 32; i++) {
+    c = sprintf("%c", i)
+    while ((p = index(s, c)) > 0) s = substr(s, 1, p - 1) sprintf("\\u%04x", i) substr(s, p + 1)
+  }
   return s
 }
 function q(s) { return "\"" esc(s) "\"" }
