@@ -51,128 +51,9 @@ if [ "${1:-}" = --verbose ]; then verbose=1; shift; fi
 
 tested=0; passing=0; failing=0; crashing=0; savings=0; status=0
 
-# awk: TAP report -> verdict lines (stdout) and the results JSON (file).
-read -r -d '' TAP_AWK <<'AWK' || true
-function esc(s) {
-  gsub(/\\/, "\\\\\\\\", s); gsub(/"/, "\\\"", s); gsub(/\t/, "\\t", s); gsub(/\r/, "", s)
-  gsub(/\n/, "\\n", s)
-  return s
-}
-function q(s) { return "\"" esc(s) "\"" }
-function suite_of(id) { s = id; sub(/::.*/, "", s); return s }
-function add_suite(s) { if (!(s in tests)) { order[++n_suites] = s; tests[s] = 0; failed[s] = 0; crashed[s] = 0 } }
-function end_message() {
-  if (msg != "") { n_msg[cur]++; message[cur, n_msg[cur]] = msg }
-  msg = ""
-}
-# One test result line: "ok - suite::name  (0.00s)" or "not ok - suite::name reason".
-/^(not )?ok - / {
-  end_message(); in_fail = 0
-  ok = ($0 ~ /^ok/)
-  line = $0; sub(/^(not )?ok - /, "", line)
-  id = line; sub(/ .*/, "", id)
-  s = suite_of(id); add_suite(s); tests[s]++
-  if (ok) next
-  failed[s]++
-  cur = ++n_fail; fail_suite[cur] = s; fail_test[cur] = substr(id, length(s) + 3); n_msg[cur] = 0
-  fail_status[cur] = "failed"
-  if (line ~ / timed out/) { fail_status[cur] = "timed out"; crashed[s]++ }
-  else if (line ~ / unexpected signal/) {
-    fail_status[cur] = "crashed"; crashed[s]++
-    where = line; sub(/.*unexpected signal after /, "", where); fail_where[cur] = where
-  }
-  in_fail = 1
-  next
-}
-in_fail && /^  - .*: \|\+$/ { end_message(); started = 1; next }
-in_fail && /^      / {
-  text = substr($0, 7)
-  if (msg == "") { sub(/^Assertion failed: /, "", text); msg = text } else msg = msg "\n" text
-  next
-}
-in_fail && /^  \.\.\./ { end_message(); in_fail = 0; next }
-END {
-  end_message()
-  # Checks in a fixed order: the unit suites by name, the image test last.
-  for (i = 1; i <= n_suites; i++)
-    for (j = i + 1; j <= n_suites; j++) {
-      a = order[i]; b = order[j]
-      ka = (a == "reference_image") "" a; kb = (b == "reference_image") "" b
-      if (kb < ka) { order[i] = b; order[j] = a }
-    }
-  width = 16
-  for (i = 1; i <= n_suites; i++) if (length(order[i]) + 2 > width) width = length(order[i]) + 2
-  total = 0; nfailed = 0; ncrashed = 0; nsaving = 0
-  for (i = 1; i <= n_suites; i++) {
-    s = order[i]; total += tests[s]; ncrashed += crashed[s]
-    if (s == "saving") nsaving += failed[s]; else nfailed += failed[s]
-  }
-  json = "{\n  \"name\": " q(name) ",\n  \"binary\": " q(binary) ",\n  \"exit_status\": " rc ","
-  json = json "\n  \"pass\": " ((nfailed == 0 && ncrashed == 0 && (rc == 0 || nsaving > 0)) ? "true" : "false") ","
-  json = json "\n  \"tested\": " total ", \"passing\": " (total - nfailed - nsaving) ", \"failing\": " nfailed ", \"crashing\": " ncrashed ","
-  json = json "\n  \"savings_missed\": " nsaving ","
-  json = json "\n  \"checks\": ["
-  for (i = 1; i <= n_suites; i++) {
-    s = order[i]
-    # Functions and docs named by this suite's failing messages, first seen first.
-    nf = 0; nd = 0; split("", seen_f); split("", seen_d); fn_list = ""; fails_json = ""
-    for (k = n_fail; k >= 1; k--) {   # TAP lists a suite's tests in reverse run order
-      if (fail_suite[k] != s) continue
-      msgs_json = ""
-      for (m = n_msg[k]; m >= 1; m--) {   # and a test's messages in reverse too
-        t = message[k, m]
-        msgs_json = msgs_json (msgs_json == "" ? "" : ", ") q(t)
-        f = t; sub(/\n.*/, "", f)
-        if (f ~ /^[A-Za-z_][A-Za-z_0-9]*(, [A-Za-z_][A-Za-z_0-9]*)*( \([^)]*\))?: /) {
-          sub(/: .*/, "", f); sub(/ \(.*/, "", f)
-          cnt = split(f, parts, ", ")
-          d = ""
-          if (match(t, /read docs\/[A-Za-z0-9_.-]+\.md(, "[^"\n]*")?/)) {
-            d = substr(t, RSTART + 5, RLENGTH - 5)
-            dfile = d; sub(/,.*/, "", dfile)
-            if (dfile ~ /^docs\/[0-9][0-9]-/) d = dfile ", \"What you write\""
-          }
-          for (p = 1; p <= cnt; p++) if (!(parts[p] in seen_f)) { seen_f[parts[p]] = 1; fn[++nf] = parts[p]; fn_doc[nf] = d }
-          if (d != "" && !(d in seen_d)) { seen_d[d] = 1; doc[++nd] = d }
-        }
-      }
-      fails_json = fails_json (fails_json == "" ? "" : ",") "\n        {\"test\": " q(fail_test[k]) ", \"status\": " q(fail_status[k]) ", \"messages\": [" msgs_json "]}"
-    }
-    # "f, g (read D1); h (read D2)": functions grouped by the doc they point to.
-    for (di = 1; di <= nd + 1; di++) {
-      grp = ""
-      for (p = 1; p <= nf; p++) if ((di <= nd && fn_doc[p] == doc[di]) || (di > nd && fn_doc[p] == "")) grp = grp (grp == "" ? "" : ", ") fn[p]
-      if (grp == "") continue
-      if (di <= nd) grp = grp " (read " doc[di] ")"
-      fn_list = fn_list (fn_list == "" ? "" : "; ") grp
-    }
-    kind = s == "reference_image" ? "image" : s == "saving" ? "saving" : "unit"
-    if (failed[s] == 0) {
-      verdict = tests[s] " test" (tests[s] == 1 ? "" : "s")
-    } else {
-      verdict = failed[s] " of " tests[s] " tests failed"
-      if (crashed[s] > 0) verdict = verdict " (" crashed[s] " crashed or timed out)"
-      if (fn_list != "") verdict = verdict ": " fn_list
-      else if (crashed[s] > 0) verdict = verdict ": the code under test stopped the test (a crash or an endless loop); run it alone: " binary " --verbose --filter '" s "/*'"
-      if (kind == "saving") verdict = verdict "; a saving the doc asks for: the result is right without it"
-    }
-    word = failed[s] == 0 ? "PASS" : kind == "saving" ? "WARN" : "FAIL"
-    if (failed[s] > 0 || verbose) printf "%s  %-" width "s%s\n", word, s, verdict
-    json = json (i > 1 ? "," : "") "\n    {\"check\": " q(s) ", \"kind\": " q(kind)
-    json = json ", \"pass\": " (failed[s] ? "false" : "true") ", \"tests\": " tests[s] ", \"failed\": " failed[s] ", \"crashed\": " crashed[s] ","
-    json = json "\n      \"functions\": ["
-    for (p = 1; p <= nf; p++) json = json (p > 1 ? ", " : "") q(fn[p])
-    json = json "], \"docs\": ["
-    for (p = 1; p <= nd; p++) { dd = doc[p]; sub(/,.*/, "", dd); json = json (p > 1 ? ", " : "") q(dd) }
-    json = json "],\n      \"verdict\": " q(verdict) ",\n      \"failures\": [" fails_json (fails_json == "" ? "" : "\n      ") "]}"
-  }
-  json = json (n_suites ? "\n  " : "") "]\n}\n"
-  printf "%s", json > out
-  if (!verbose && nfailed == 0)
-    printf "PASS  %-" width "s%d checks, %d tests\n", name, n_suites, total
-  print total, total - nfailed - nsaving, nfailed, ncrashed, nsaving, ((rc == 0 || nsaving > 0) ? 0 : 1) > counts
-}
-AWK
+# tests/results.awk: TAP report -> verdict lines (stdout) and the results
+# JSON (file); the grader (tools/grading/tests.sh) reads reports with it too.
+results_awk=$(dirname "$0")/results.awk
 
 for bin in "$@"; do
   name=${bin##*/}
@@ -194,7 +75,7 @@ for bin in "$@"; do
     status=1; crashing=$((crashing + 1)); failing=$((failing + 1)); rm -f "$tap" "$counts"; continue
   fi
   awk -v name="$name" -v binary="$bin" -v rc="$rc" -v verbose="$verbose" \
-      -v out="$results/$name.json" -v counts="$counts" "$TAP_AWK" "$tap"
+      -v out="$results/$name.json" -v counts="$counts" -f "$results_awk" "$tap"
   read -r t p f c sv bad < "$counts"
   rm -f "$tap" "$counts"
   tested=$((tested + t)); passing=$((passing + p)); failing=$((failing + f)); crashing=$((crashing + c))
