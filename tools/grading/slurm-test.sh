@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# make test-grade-slurm (docs/grading.md, "On a cluster"): a one-node Slurm
+# make test-grade-slurm (docs/grading.md, "On a few hosts, on a cluster"): a one-node Slurm
 # started here (munged with a fresh key, slurmctld and slurmd as root, on
 # ports of their own), the sample class graded through the job array
 # (tools/grade SLURM=1), grades.csv compared with the local grading's, and

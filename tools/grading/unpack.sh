@@ -1,5 +1,5 @@
 # Sourced by tools/grading/one.sh: a submission's files, whatever its form
-# (docs/grading.md, "Collecting"). Archives and repositories are opened by
+# (docs/grading.md, "Handing out, collecting"). Archives and repositories are opened by
 # sandbox_run, so a hostile archive (paths outside, links, a bomb) meets the
 # same limits and walls as the submission's code.
 
