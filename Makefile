@@ -173,7 +173,9 @@ STRESSBIN := $(if $(STRESS_TESTS),$(BUILD)/tests/stress)
 
 test: $(TESTBIN) $(STRESSBIN) $(BUILD)/bin/04-phong $(BUILD)/bin/05-shadows $(BUILD)/bin/mistakes
 	@tests/run.sh $(TESTBIN) $(STRESSBIN) $(TRACE_TESTBIN); status=$$?; \
-	  $(REPORT_AFTER_TEST) || status=1; exit $$status
+	  $(REPORT_AFTER_TEST) || status=1; \
+	  $(if $(SAN),,$(foreach t,$(TEST_AFTER),$(MAKE) --no-print-directory $(t) || status=1;)) \
+	  exit $$status
 
 # The stress tests render through steps 04, 05 and tools/mistakes.c (docs/accuracy.md).
 stress: $(STRESSBIN) $(BUILD)/bin/04-phong $(BUILD)/bin/05-shadows $(BUILD)/bin/mistakes
