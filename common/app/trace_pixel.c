@@ -90,6 +90,7 @@ bool trace_pixel(const Scene *scene, const RenderSettings *set, const TraceReque
     t->ctx = &run;
     term[t->term] = req->pixel(&t->masked[t->term], &film, i, j, &run);
     trace_drain(t);
+    free(run.memo); /* render_point's, when the step has one */
   }
   t->mode = TRACE_RECORD;
   t->ctx = &ctx;
@@ -102,6 +103,7 @@ bool trace_pixel(const Scene *scene, const RenderSettings *set, const TraceReque
   bool lit = (req->features & SCENE_LIGHTS) && (t->compact || t->lit);
   end_pixel(t, scene, req, term, lit, c);
   print(t, scene, req, out);
+  free(ctx.memo);
   trace_free(t);
   free(t);
   return true;
