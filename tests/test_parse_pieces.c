@@ -10,6 +10,27 @@
 #include "app/parser.h"
 #include "app/parser_state.h"
 
+/* Two instances with the same shape, compared by the union member it uses
+ * (the rest of the union's bytes are unspecified after a member's store). */
+static bool same_instance(const Instance *a, const Instance *b)
+{
+  if (a->shape != b->shape || a->material != b->material || a->light != b->light)
+    return false;
+  switch (a->shape) {
+  case SHAPE_SPHERE: return memcmp(&a->sphere, &b->sphere, sizeof a->sphere) == 0;
+  case SHAPE_PLANE:  return memcmp(&a->plane, &b->plane, sizeof a->plane) == 0;
+  default:           return memcmp(&a->quad, &b->quad, sizeof a->quad) == 0;
+  }
+}
+
+static bool same_instances(const Instance *a, const Instance *b, int n)
+{
+  for (int k = 0; k < n; k++)
+    if (!same_instance(&a[k], &b[k]))
+      return false;
+  return true;
+}
+
 /* A scene's contents as bytes, for comparing two parses. */
 static bool same_scene(const Scene *a, const Scene *b)
 {
@@ -24,8 +45,7 @@ static bool same_scene(const Scene *a, const Scene *b)
                                         sizeof *a->materials * (size_t)a->n_materials) == 0) &&
          (a->n_lights == 0 || memcmp(a->lights, b->lights,
                                      sizeof *a->lights * (size_t)a->n_lights) == 0) &&
-         (a->n_instances == 0 || memcmp(a->instances, b->instances,
-                                        sizeof *a->instances * (size_t)a->n_instances) == 0);
+         same_instances(a->instances, b->instances, a->n_instances);
 }
 
 /* What parser_load_chunks prints and builds for `text` in `chunks` pieces. */
