@@ -6,7 +6,6 @@
 
 #include <criterion/redirect.h>
 
-#include <dirent.h>
 #include <math.h>
 #include <signal.h>
 #include <stdint.h>
@@ -19,6 +18,7 @@
 #include <stb_image.h>
 
 #include "app/image.h"
+#include "testfiles.h"
 
 #define OUT_DIR BUILD_DIR "/test-out"
 #define DOC "docs/01-film.md, \"What you write\""
@@ -211,18 +211,6 @@ static long slurp(const char *path, char *buf, size_t size)
   return (long)n;
 }
 
-/* Names in OUT_DIR/dir starting with `prefix`. */
-static int count_files(const char *dir, const char *prefix)
-{
-  DIR *d = opendir(dir);
-  int n = 0;
-  for (struct dirent *e; d && (e = readdir(d));)
-    n += strncmp(e->d_name, prefix, strlen(prefix)) == 0;
-  if (d)
-    closedir(d);
-  return n;
-}
-
 Test(image, save_into_a_missing_directory_fails)
 {
   float rgb[3] = {0.5f, 0.5f, 0.5f};
@@ -291,8 +279,8 @@ Test(image, failed_write_leaves_the_existing_file_untouched)
     CHECK_THAT(&c, n == (long)sizeof old - 1 && memcmp(buf, old, sizeof old - 1) == 0,
                "a failed write changed the existing %s", paths[k]);
   }
-  CHECK_INT(&c, 0, count_files(dir, "keep.png.tmp"), "temporary .png files left behind");
-  CHECK_INT(&c, 0, count_files(dir, "keep.pfm.tmp"), "temporary .pfm files left behind");
+  CHECK_INT(&c, 0, testfiles_count(dir, "keep.png.tmp"), "temporary .png files left behind");
+  CHECK_INT(&c, 0, testfiles_count(dir, "keep.pfm.tmp"), "temporary .pfm files left behind");
 }
 
 Test(image, save_replaces_an_existing_file)
