@@ -26,8 +26,8 @@ IMAGE_TESTS='^(image::step_matches_its_reference_image|reference_image::.*)$'
 # region of the same step calls. "STEP NAME=OTHER": stubbing NAME stubs OTHER
 # of the same file too (what the starter does anyway).
 TOGETHER=(
-  "07 trace_samples=pixel"
-  "08 pattern_make,area_incident=shade_area"
+  "07 trace_point,pixel_sampled,colours_differ,at,square_mean=pixel"
+  "08 light_pattern,area_incident=shade_area"
 )
 
 # Later steps that do not use a region: "STEP NAME STEPS reason". With the
@@ -35,7 +35,7 @@ TOGETHER=(
 # picture byte for byte as the solution does; the check fails otherwise, so
 # this table cannot rot.
 EXCEPTIONS=(
-  "01 film_sample 07,08 steps 07 and 08 place their own samples inside the pixel (trace_samples) and never call film_sample"
+  "01 film_sample 07,08 steps 07 and 08 place their own samples inside the pixel (pixel_sampled, or square_mean's lattice points) and never call film_sample"
   "02 sphere_hit_fill 03 step 03 draws each object in its flat colour: it needs which instance was hit (set outside the region), not the point or the normal"
   "02 plane_hit_fill 03 step 03 draws each object in its flat colour: it needs which instance was hit (set outside the region), not the point or the normal"
   "06 shade_trace 08 step 08's scene has no point light with a radius, so no light sphere for the camera to see"
