@@ -47,6 +47,9 @@ CFLAGS  := -std=c11 $(OPT) -g -fopenmp -ffp-contract=off -fno-math-errno \
            -D_POSIX_C_SOURCE=200809L \
            -Wall -Wextra -Wpedantic -Wshadow -Wstrict-prototypes \
            -Wmissing-prototypes -Werror -MMD -MP -Icommon
+# TRACE_OFF=1: the trace hooks compiled out (make bench's comparison build;
+# --trace and --aov then record nothing).
+CFLAGS  += $(if $(TRACE_OFF),-DTRACE_COMPILED_OUT)
 # pkg-config runs when a recipe needs it, after the dependency check below.
 PKG_CFLAGS = $(shell pkg-config --cflags cglm stb libpng)
 LDLIBS  := -fopenmp -lpng -lstb -lm

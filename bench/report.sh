@@ -195,6 +195,16 @@ EOF
 if [ -n "$POV" ]; then table "$D/povray.csv"; else echo "POV-Ray is not installed (\`apt-get install povray\`): its rows are empty."; fi
 cat <<EOF
 
+## Tracing compiled in but off
+
+\`--trace\` and \`--aov\` hook into the steps' glue code (docs/tracing.md). The
+same steps built with the hooks compiled out (\`make TRACE_OFF=1\`, in
+build/bench-notrace), both builds run in turn, 2 threads, 800x600 (step 05 on
+scenes/spheres.scene, step 08 on its default scene, its area light): trace and whole-process time (s, medians) and the median of the
+pairs' ratios (with hooks / without; 1 = no change).
+
+$(table "$D/trace-off.csv" 2>/dev/null)
+
 ## Scaling: spheres on the plane
 
 \`bench/gen_spheres N\` writes N spheres on a jittered grid over the same patch

@@ -92,6 +92,31 @@ if [ -n "$POV" ]; then
   done
 fi
 
+# Tracing compiled in but off (docs/tracing.md): steps 05 and 08 built again
+# with the hooks compiled out (make TRACE_OFF=1, in build/bench-notrace), the
+# two builds run in turn, medians and the median of the pairs' ratios.
+NT=build/bench-notrace
+echo "step,pairs,trace_with_hooks,trace_without,trace_ratio,wall_with_hooks,wall_without,wall_ratio" > "$D/trace-off.csv"
+if make --no-print-directory BUILD=$NT TRACE_OFF=1 $NT/bin/05-shadows $NT/bin/08-area-lights \
+     >"$B/notrace.log" 2>&1; then
+  log "tracing off: steps 05 and 08, with and without the hooks, in turn ($((2 * RUNS)) pairs)"
+  for s in 05-shadows 08-area-lights; do
+    have "$s" || continue
+    sc=(--scene scenes/spheres.scene); [ "$s" = 08-area-lights ] && sc=() # its area light
+    pairs=$(for _ in $(seq $((2 * RUNS))); do
+      a=$(ours "$s" "${sc[@]}" --threads 2 -o "$B/tp.png")
+      b=$(BIN=$NT/bin ours "$s" "${sc[@]}" --threads 2 -o "$B/tp.png")
+      echo "$a $b"
+    done)
+    # columns: trace mrays wall (with), trace mrays wall (without)
+    m() { awk "{print $1}" <<<"$pairs" | stats | cut -d' ' -f1; }
+    echo "$s,$((2 * RUNS)),$(m '$1'),$(m '$4'),$(m '$1 / $4'),$(m '$3'),$(m '$6'),$(m '$3 / $6')" \
+      >> "$D/trace-off.csv"
+  done
+else
+  log "tracing off: the build without hooks failed ($B/notrace.log)"
+fi
+
 # Step 05's one-sample frame against POV-Ray's, the two run in turn (ours,
 # POV-Ray, ours, ...) so that a change of the machine's load hits both: the
 # headline's figures.

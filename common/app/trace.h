@@ -66,7 +66,14 @@ typedef struct TraceEvents {
  * stores the values it is given into ctx->trace, one by one, and hands back
  * its last argument: no call and no copy of a whole struct, so that the
  * render around it compiles as it would without it (docs/tracing.md,
- * "What it costs when off", measures it). */
+ * "What it costs when off", measures it; make bench compares with a build
+ * whose hooks are compiled out, -DTRACE_COMPILED_OUT). */
+#ifdef TRACE_COMPILED_OUT /* make bench's second build (TRACE_OFF=1): no hooks */
+#define TRACE_ON(ctx) ((void)(ctx), 0)
+#else
+#define TRACE_ON(ctx) __builtin_expect((ctx)->trace != NULL, 0)
+#endif
+
 static inline TraceEvent *trace_slot(RenderCtx *ctx, TraceEventKind kind)
 {
   TraceEvents *ev = ctx->trace;
@@ -81,7 +88,7 @@ static inline TraceEvent *trace_slot(RenderCtx *ctx, TraceEventKind kind)
  * recorder saw). */
 static inline void trace_hit(RenderCtx *ctx, const Hit *hit)
 {
-  if (__builtin_expect(ctx->trace != NULL, 0)) {
+  if (TRACE_ON(ctx)) {
     TraceEvent *e = trace_slot(ctx, TRACE_EVENT_HIT);
     e->inst = hit->inst;
     e->t = hit->t;
@@ -95,7 +102,7 @@ static inline void trace_hit(RenderCtx *ctx, const Hit *hit)
  * the camera ray's hit; returns c. */
 static inline vec3s trace_light(RenderCtx *ctx, int k, vec3s li, vec3s l, vec3s c)
 {
-  if (__builtin_expect(ctx->trace != NULL, 0)) {
+  if (TRACE_ON(ctx)) {
     TraceEvent *e = trace_slot(ctx, TRACE_EVENT_LIGHT);
     e->light = k;
     e->li = li;
@@ -109,7 +116,7 @@ static inline vec3s trace_light(RenderCtx *ctx, int k, vec3s li, vec3s l, vec3s 
  * when the renderer proved nothing can block it. Returns c. */
 static inline vec3s trace_area(RenderCtx *ctx, int k, bool unoccluded, vec3s c)
 {
-  if (__builtin_expect(ctx->trace != NULL, 0)) {
+  if (TRACE_ON(ctx)) {
     TraceEvent *e = trace_slot(ctx, TRACE_EVENT_AREA);
     e->light = k;
     e->flag = unoccluded;
