@@ -63,6 +63,42 @@ bool scene_add_instance(Scene *scene, const Instance *inst)
   return true;
 }
 
+bool scene_add_instances(Scene *scene, const Instance *insts, int n, int material_offset)
+{
+  /* push's capacity is at least the power of two at or above the count:
+   * reserve that for the new count, as the pushes would. */
+  size_t count = (size_t)scene->n_instances, cap = 4, now = 1;
+  while (cap < count + (size_t)n)
+    cap *= 2;
+  while (now < count)
+    now *= 2;
+  if (!scene->instances || cap > now) {
+    Instance *bigger = realloc(scene->instances, cap * sizeof *bigger);
+    if (!bigger) {
+      fprintf(stderr, "scene: out of memory\n");
+      return false;
+    }
+    scene->instances = bigger;
+  }
+  Instance *to = scene->instances + count;
+  bool lit = false;
+#pragma omp parallel for schedule(static) if (n > 65536) reduction(|| : lit)
+  for (int k = 0; k < n; k++) {
+    to[k] = insts[k];
+    if (to[k].material >= 0) {
+      to[k].material += material_offset;
+      lit = true;
+    }
+  }
+  scene->n_instances += n;
+  for (int k = n - 1; lit && k >= 0; k--)
+    if (to[k].material >= 0) {
+      scene->n_shapes = scene->n_instances - (n - 1 - k);
+      break;
+    }
+  return true;
+}
+
 int scene_find_material(const Scene *scene, const char *name)
 {
   for (int k = 0; k < scene->n_materials; k++)

@@ -210,7 +210,8 @@ static bool build_tree(Accel *acc, const Scene *scene, const int *ids, int n, bo
   float(*lo)[3] = malloc((size_t)n * sizeof *lo), (*hi)[3] = malloc((size_t)n * sizeof *hi);
   Bvh bvh = {0};
   bool ok = lo && hi;
-  for (int k = 0; ok && k < n; k++)
+#pragma omp parallel for schedule(static) if (ok && n > 65536)
+  for (int k = 0; k < (ok ? n : 0); k++)
     sphere_box(&scene->instances[ids[k]].sphere, lo[k], hi[k]);
   ok = ok && bvh_build(&bvh, (const float(*)[3])lo, (const float(*)[3])hi, n,
                        flat ? n : LEAF_MAX);
@@ -219,6 +220,7 @@ static bool build_tree(Accel *acc, const Scene *scene, const int *ids, int n, bo
   if (!ok)
     return false;
   acc->spheres = bvh.order; /* leaf order, as indices into ids: map them */
+#pragma omp parallel for schedule(static) if (n > 65536)
   for (int k = 0; k < n; k++)
     acc->spheres[k] = ids[acc->spheres[k]];
   for (int k = 0; k < bvh.n_nodes; k++)

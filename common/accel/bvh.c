@@ -130,11 +130,14 @@ static bool gather(SahBuild *b, int n, const MortonRuns *c, Top *t)
     return false;
   }
   for (int p = 0, sum = 0; p < c->n; p++) {
-    int k = t->ids[p];
-    memcpy(items + sum, b->items + c->first[k], (size_t)c->count[k] * sizeof *items);
-    memcpy(ids + sum, b->ids + c->first[k], (size_t)c->count[k] * sizeof *ids);
     t->offset[p] = sum;
-    sum += c->count[k];
+    sum += c->count[t->ids[p]];
+  }
+#pragma omp parallel for schedule(static)
+  for (int p = 0; p < c->n; p++) {
+    int k = t->ids[p];
+    memcpy(items + t->offset[p], b->items + c->first[k], (size_t)c->count[k] * sizeof *items);
+    memcpy(ids + t->offset[p], b->ids + c->first[k], (size_t)c->count[k] * sizeof *ids);
   }
   free(b->items);
   free(b->ids);
@@ -152,6 +155,7 @@ static bool build_clustered(SahBuild *b, int n, const uint32_t *sorted)
   bool ok = c.first && c.count && top_alloc(&t, n);
   if (ok) {
     morton_runs(sorted, 0, n, CLUSTER, &c);
+#pragma omp parallel for schedule(static)
     for (int k = 0; k < c.n; k++) {
       t.boxes[k] = sah_box_empty();
       for (int j = c.first[k]; j < c.first[k] + c.count[k]; j++)
@@ -186,7 +190,8 @@ bool bvh_build(Bvh *bvh, const float (*lo)[3], const float (*hi)[3], int n,
   b.nodes = malloc((size_t)(2 * n - 1) * sizeof *b.nodes);
   *bvh = (Bvh){0};
   bool ok = b.items && b.ids && b.nodes;
-  for (int k = 0; ok && k < n; k++) {
+#pragma omp parallel for schedule(static) if (ok && n > 65536)
+  for (int k = 0; k < (ok ? n : 0); k++) {
     b.items[k] = (Box){{lo[k][0], lo[k][1], lo[k][2], 0.0f},
                        {hi[k][0], hi[k][1], hi[k][2], 0.0f}};
     b.ids[k] = k;

@@ -21,14 +21,23 @@ static uint32_t spread3(uint32_t x)
 void morton_codes(const Box *items, int n, uint32_t *code)
 {
   Box cb = sah_box_empty();
+  float lo0 = cb.lo[0], lo1 = cb.lo[1], lo2 = cb.lo[2];
+  float hi0 = cb.hi[0], hi1 = cb.hi[1], hi2 = cb.hi[2];
+#pragma omp parallel for schedule(static) if (n > 65536) \
+    reduction(min : lo0, lo1, lo2) reduction(max : hi0, hi1, hi2)
   for (int k = 0; k < n; k++) {
-    Box c = {items[k].lo + items[k].hi, items[k].lo + items[k].hi};
-    sah_box_grow(&cb, &c);
+    V4 c = items[k].lo + items[k].hi;
+    lo0 = c[0] < lo0 ? c[0] : lo0, hi0 = c[0] > hi0 ? c[0] : hi0;
+    lo1 = c[1] < lo1 ? c[1] : lo1, hi1 = c[1] > hi1 ? c[1] : hi1;
+    lo2 = c[2] < lo2 ? c[2] : lo2, hi2 = c[2] > hi2 ? c[2] : hi2;
   }
+  cb.lo = (V4){lo0, lo1, lo2, 0.0f};
+  cb.hi = (V4){hi0, hi1, hi2, 0.0f};
   float extent = 0.0f;
   for (int a = 0; a < 3; a++)
     extent = cb.hi[a] - cb.lo[a] > extent ? cb.hi[a] - cb.lo[a] : extent;
   float scale = extent > 0.0f ? (float)(1 << MORTON_BITS) / extent : 0.0f;
+#pragma omp parallel for schedule(static) if (n > 65536)
   for (int k = 0; k < n; k++) {
     uint32_t q[3];
     for (int a = 0; a < 3; a++) { /* clamped before the conversion */
@@ -112,7 +121,8 @@ bool morton_sort(SahBuild *b, int n, uint32_t **codes)
     morton_codes(b->items, n, code);
     ok = morton_order(code, n, order);
   }
-  for (int k = 0; ok && k < n; k++) {
+#pragma omp parallel for schedule(static) if (ok && n > 65536)
+  for (int k = 0; k < (ok ? n : 0); k++) {
     items[k] = b->items[order[k]];
     ids[k] = b->ids[order[k]];
     order[k] = (int)code[order[k]]; /* the codes in the new order */

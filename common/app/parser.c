@@ -128,19 +128,85 @@ static bool st_material(Parser *p)
          names_add(&p->names, materials(p), p->scene->n_materials - 1);
 }
 
-bool parser_pending_add(Parser *p, const Pending *r)
+static NameRecords forward_records(const Parser *p)
 {
-  if ((p->n_pending & (p->n_pending - 1)) == 0) {
-    Pending *bigger = realloc(p->pending, sizeof *bigger *
-                              (size_t)(p->n_pending ? 2 * p->n_pending : 4));
+  return (NameRecords){p->forward ? p->forward[0].name : "", sizeof(ForwardName)};
+}
+
+/* Room for n more pending references (the array's capacity is the power of
+ * two at or above its count); false when out of memory. */
+static bool pending_reserve(Parser *p, int n)
+{
+  size_t cap = 4;
+  while (cap < (size_t)p->n_pending + (size_t)n)
+    cap *= 2;
+  size_t now = 4;
+  while (now < (size_t)p->n_pending)
+    now *= 2;
+  if (p->pending && cap <= now)
+    return true;
+  Pending *bigger = realloc(p->pending, cap * sizeof *bigger);
+  if (!bigger) {
+    fprintf(stderr, "parser: out of memory\n");
+    return false;
+  }
+  p->pending = bigger;
+  return true;
+}
+
+/* The index in p->forward of `name`, added when new; -1 when out of memory. */
+static int forward_name(Parser *p, const char *name, int len)
+{
+  int id = names_find(&p->forward_names, forward_records(p), name, len);
+  if (id >= 0)
+    return id;
+  if ((p->n_forward & (p->n_forward - 1)) == 0) {
+    ForwardName *bigger = realloc(p->forward, sizeof *bigger *
+                                  (size_t)(p->n_forward ? 2 * p->n_forward : 4));
     if (!bigger) {
       fprintf(stderr, "parser: out of memory\n");
-      return false;
+      return -1;
     }
-    p->pending = bigger;
+    p->forward = bigger;
   }
-  p->pending[p->n_pending++] = *r;
+  ForwardName *f = &p->forward[p->n_forward];
+  memcpy(f->name, name, (size_t)len);
+  f->name[len] = '\0';
+  if (!names_add(&p->forward_names, forward_records(p), p->n_forward))
+    return -1;
+  return p->n_forward++;
+}
+
+bool parser_pending_add(Parser *p, int instance, int line, int col, const char *name, int len)
+{
+  int id = forward_name(p, name, len);
+  if (id < 0 || !pending_reserve(p, 1))
+    return false;
+  p->pending[p->n_pending++] = (Pending){instance, line, col, id};
   return true;
+}
+
+bool parser_pending_merge(Parser *p, const Parser *q, int first_instance)
+{
+  int *map = malloc(((size_t)q->n_forward + 1) * sizeof *map);
+  bool ok = map && pending_reserve(p, q->n_pending);
+  for (int k = 0; ok && k < q->n_forward; k++) {
+    const char *name = q->forward[k].name;
+    ok = (map[k] = forward_name(p, name, (int)strlen(name))) >= 0;
+  }
+  if (ok) {
+    Pending *to = p->pending + p->n_pending;
+    for (int k = 0; k < q->n_pending; k++) {
+      to[k] = q->pending[k];
+      to[k].instance += first_instance;
+      to[k].name = map[to[k].name];
+    }
+    p->n_pending += q->n_pending;
+  }
+  if (!map)
+    fprintf(stderr, "parser: out of memory\n");
+  free(map);
+  return ok;
 }
 
 /* Add a lit instance; a material not defined yet is resolved at the end. */
@@ -151,9 +217,8 @@ static bool add_shape(Parser *p, Instance *inst, const Field *material)
   inst->light = -1;
   if (inst->material < 0) {
     inst->material = 0;
-    Pending r = {p->scene->n_instances, p->lx.line, name->col, ""};
-    memcpy(r.name, name->s, (size_t)name->len);
-    if (!parser_pending_add(p, &r))
+    if (!parser_pending_add(p, p->scene->n_instances, p->lx.line, name->col, name->s,
+                            name->len))
       return false;
   }
   return scene_add_instance(p->scene, inst);
@@ -215,34 +280,42 @@ static bool statement(Parser *p)
 bool parser_resolve(Parser *p)
 {
   Scene *s = p->scene;
-  for (int k = 0; k < p->n_pending; k++) {
-    const Pending *r = &p->pending[k];
-    int m = names_find(&p->names, materials(p), r->name, (int)strlen(r->name));
-    if (m >= 0) {
-      s->instances[r->instance].material = m;
-      continue;
-    }
-    /* Point the lexer back at the reference for the message. */
-    p->lx.line = r->line;
-    p->lx.tok[0] = (Token){r->name, (int)strlen(r->name), r->col};
-    p->lx.n = 1;
-    p->lx.pos = 0;
-    if (s->n_materials == 0)
-      return lexer_fail(&p->lx, r->col, "expected a defined material name, found "
-                        "'%s' (the file defines no material)", r->name);
-    const char *names[64];
-    int n_names = s->n_materials < 64 ? s->n_materials : 64;
-    for (int j = 0; j < n_names; j++)
-      names[j] = s->materials[j].name;
-    return lexer_fail_unknown(&p->lx, "a defined material name", names, n_names);
+  int *found = malloc(((size_t)p->n_forward + 1) * sizeof *found);
+  if (!found) {
+    fprintf(stderr, "parser: out of memory\n");
+    return false;
   }
-  return true;
+  for (int k = 0; k < p->n_forward; k++) /* each name looked up once */
+    found[k] = names_find(&p->names, materials(p), p->forward[k].name,
+                          (int)strlen(p->forward[k].name));
+  int k = 0;
+  for (; k < p->n_pending && found[p->pending[k].name] >= 0; k++)
+    s->instances[p->pending[k].instance].material = found[p->pending[k].name];
+  free(found);
+  if (k == p->n_pending)
+    return true;
+  /* Point the lexer back at the first undefined reference for the message. */
+  const Pending *r = &p->pending[k];
+  const char *name = p->forward[r->name].name;
+  p->lx.line = r->line;
+  p->lx.tok[0] = (Token){name, (int)strlen(name), r->col};
+  p->lx.n = 1;
+  p->lx.pos = 0;
+  if (s->n_materials == 0)
+    return lexer_fail(&p->lx, r->col, "expected a defined material name, found "
+                      "'%s' (the file defines no material)", name);
+  const char *names[64];
+  int n_names = s->n_materials < 64 ? s->n_materials : 64;
+  for (int j = 0; j < n_names; j++)
+    names[j] = s->materials[j].name;
+  return lexer_fail_unknown(&p->lx, "a defined material name", names, n_names);
 }
 
 void parser_begin(Parser *p, const char *file, const char *text, size_t len, Scene *scene)
 {
   *p = (Parser){.scene = scene};
   names_init(&p->names);
+  names_init(&p->forward_names);
   lexer_init(&p->lx, file, text, len);
 }
 
@@ -258,7 +331,10 @@ bool parser_statements(Parser *p)
 void parser_end(Parser *p)
 {
   free(p->pending);
+  free(p->forward);
   names_free(&p->names);
+  names_free(&p->forward_names);
   p->pending = NULL;
-  p->n_pending = 0;
+  p->forward = NULL;
+  p->n_pending = p->n_forward = 0;
 }

@@ -93,19 +93,8 @@ static bool merge(Piece *to, const Piece *q)
   for (int k = 0; k < q->scene.n_lights; k++)
     if (!scene_add_light(s, &q->scene.lights[k]))
       return false;
-  for (int k = 0; k < q->scene.n_instances; k++) {
-    Instance inst = q->scene.instances[k];
-    inst.material += first_material;
-    if (!scene_add_instance(s, &inst))
-      return false;
-  }
-  for (int k = 0; k < q->p.n_pending; k++) {
-    Pending r = q->p.pending[k];
-    r.instance += first_instance;
-    if (!parser_pending_add(&to->p, &r))
-      return false;
-  }
-  return true;
+  return scene_add_instances(s, q->scene.instances, q->scene.n_instances, first_material) &&
+         parser_pending_merge(&to->p, &q->p, first_instance);
 }
 
 bool parser_load_chunks(const char *file, const char *text, size_t len, Scene *scene,
@@ -164,9 +153,8 @@ bool parser_load_string(const char *file, const char *text, Scene *scene)
 
 bool parser_load_file(const char *path, Scene *scene)
 {
-  char *text;
-  size_t len;
-  int err = textfile_read(path, PARSER_MAX_BYTES, &text, &len);
+  TextFile f;
+  int err = textfile_read(path, PARSER_MAX_BYTES, &f);
   if (err == EFBIG)
     fprintf(stderr, "parser: cannot read '%s': larger than %zu bytes, the limit of a "
             "scene file\n", path, PARSER_MAX_BYTES);
@@ -176,7 +164,7 @@ bool parser_load_file(const char *path, Scene *scene)
     scene_free(scene);
     return false;
   }
-  bool ok = parser_load_text(path, text, len, scene);
-  free(text);
+  bool ok = parser_load_text(path, f.text, f.len, scene);
+  textfile_free(&f);
   return ok;
 }

@@ -12,11 +12,17 @@
 enum { ONCE_FILM, ONCE_CAMERA, ONCE_AMBIENT, ONCE_BACKGROUND, ONCE_SAMPLES,
        ONCE_LIGHT_SAMPLES, ONCE_COUNT };
 
-/* A shape whose material was not defined yet where it was named. */
+/* A shape whose material was not defined yet where it was named: the name
+ * is the parser's forward[name] (each such name is kept once, however many
+ * shapes use it: in the second half of a 10^6-sphere scene parsed in two
+ * pieces, every shape names a material its piece has not seen). */
 typedef struct Pending {
-  int instance, line, col;
-  char name[MATERIAL_NAME_MAX];
+  int instance, line, col, name;
 } Pending;
+
+typedef struct ForwardName {
+  char name[MATERIAL_NAME_MAX];
+} ForwardName;
 
 typedef struct Parser {
   Lexer lx;
@@ -24,6 +30,9 @@ typedef struct Parser {
   Names names;       /* material name -> index into scene->materials */
   Pending *pending;  /* in file order */
   int n_pending;
+  ForwardName *forward; /* the names pending references use */
+  int n_forward;
+  Names forward_names;  /* name -> index into forward */
   int once_line[ONCE_COUNT]; /* where each once-statement was, 0: not yet */
 } Parser;
 
@@ -38,8 +47,14 @@ void parser_begin(Parser *p, const char *file, const char *text, size_t len, Sce
  * are left in p->pending. */
 bool parser_statements(Parser *p);
 
-/* Append a reference to resolve at the end; false when out of memory. */
-bool parser_pending_add(Parser *p, const Pending *r);
+/* Append a reference to material `name` (`len` bytes) of instance
+ * `instance`, at `line`, `col`, to resolve at the end; false when out of
+ * memory. */
+bool parser_pending_add(Parser *p, int instance, int line, int col, const char *name, int len);
+
+/* Append q's references after p's, their instances moved by `first_instance`
+ * (q's shapes appended after p's); false when out of memory. */
+bool parser_pending_merge(Parser *p, const Parser *q, int first_instance);
 
 /* Resolve p->pending; false (printed) at the first undefined name. */
 bool parser_resolve(Parser *p);
