@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Second half of `make bench` (bench/run.sh): docs/benchmarks.md and its
 # plots from the CSV files in docs/bench/. Usage: bench/report.sh SECONDS POVRAY ALL
+# "LOAD_START LOAD_END"; BENCH_MACHINE, when set, describes the machine the
+# CSV files were measured on (default: this one's processor and cores).
 set -uo pipefail
 cd "$(dirname "$0")/.."
 D=docs/bench; OUT=docs/benchmarks.md; TMP=$(mktemp -d)
@@ -89,6 +91,7 @@ p5t=$(awk -F, '$1 == "povray" && $2 == 2 {print $3}' "$s5"); p5w=$(awk -F, '$1 =
 r5t=$(ratio "$p5t" "$o5t"); r5w=$(ratio "$p5w" "$o5w")
 w3=$(col "$D/scaling.csv" 1 1000 5); w6=$(col "$D/scaling.csv" 1 1000000 5)
 r6=$(ratio "$w6" "$w3")
+CC_USED=$(readelf -p .comment build/bin/05-shadows 2>/dev/null | sed -n 's/.*GCC: //p' | head -n1)
 all_note="all cores = $ALL here"
 [ "$ALL" = 2 ] && all_note="this machine has 2 cores: \"all cores\" is the 2-thread row"
 
@@ -97,8 +100,8 @@ cat <<EOF
 # Benchmarks
 
 Written by \`make bench\` (bench/run.sh, bench/report.sh) on $(date -u +%Y-%m-%d) in
-${total} s, on: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs), $(nproc) cores,
-$(gcc --version | head -n1), POV-Ray: ${POV:-not installed}. Load average (other
+${total} s, on: ${BENCH_MACHINE:-$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs), $(nproc) cores},
+built with gcc ${CC_USED:-?}, POV-Ray: ${POV:-not installed}. Load average (other
 jobs on the machine) ${LOADS% *} at the start, ${LOADS#* } at the end. Every figure is a
 median over repeated runs in this one run (the CSV files hold min and max);
 the machines are shared and noisy, so compare within the run, not across

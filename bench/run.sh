@@ -4,16 +4,26 @@
 # docs/bench/*.png and the CSV files they are drawn from (docs/bench/*.csv).
 # It reports; it never fails on a figure. Environment: BENCH_RUNS (default 9)
 # repetitions of the throughput timings, BENCH_ERR_RUNS (3) of the error
-# sweeps, THREADS_ALL (default: nproc) the "all cores" thread count.
+# sweeps, THREADS_ALL (default: nproc) the "all cores" thread count,
+# BENCH_PARTS (default: all of them) the parts to run, among: throughput
+# tracing step05 error07 error08 threads scaling report (threads reads the
+# error CSVs; report reads them all), BENCH_PREBUILT=1 to use the programs
+# already in build/ (build/bin, build/bench-notrace, build/bench/gen_spheres
+# and rmse) without compiling anything: a machine that runs but cannot build.
 set -uo pipefail
 cd "$(dirname "$0")/.."
 B=build/bench; D=docs/bench; BIN=build/bin; REF=$B/refs
 RUNS=${BENCH_RUNS:-9}; ERUNS=${BENCH_ERR_RUNS:-3}; ALL=${THREADS_ALL:-$(nproc)}
+PARTS=" ${BENCH_PARTS:-throughput tracing step05 error07 error08 threads scaling report} "
+PREBUILT=${BENCH_PREBUILT:-}
+part() { [[ "$PARTS" == *" $1 "* ]]; }
 W=800; H=600
 mkdir -p "$B" "$D" "$REF"
-CFL="-std=c11 -O2 -Icommon $(pkg-config --cflags cglm stb)"
-gcc $CFL bench/gen_spheres.c -lm -o "$B/gen_spheres" || exit 1
-gcc $CFL bench/rmse.c build/libcommon.a -fopenmp -lpng -lstb -lm -o "$B/rmse" || exit 1
+if [ -z "$PREBUILT" ]; then
+  CFL="-std=c11 -O2 -Icommon $(pkg-config --cflags cglm stb)"
+  gcc $CFL bench/gen_spheres.c -lm -o "$B/gen_spheres" || exit 1
+  gcc $CFL bench/rmse.c build/libcommon.a -fopenmp -lpng -lstb -lm -o "$B/rmse" || exit 1
+fi
 POV=$(command -v povray || true)
 POV_SCENE=bench/spheres.pov
 have() { [ -x "$BIN/$1" ]; }
@@ -73,6 +83,7 @@ ref_pov() { # ARGS... -> prints the reference's path (16-bit linear PNG)
 }
 
 # ---------------------------------------------------------------- throughput
+if part throughput; then
 log "throughput (steps 04-08 on scenes/spheres.scene, ${W}x$H, $RUNS runs)"
 echo "step,threads,mrays,trace_med,trace_min,trace_max,mrays_per_s,wall_med,wall_min,wall_max" > "$D/throughput.csv"
 for s in 04-phong 05-shadows 06-ambient 07-antialiasing 08-area-lights; do
@@ -91,13 +102,16 @@ if [ -n "$POV" ]; then
     echo "$t,$a,$b,$c,$d,$e,$f" >> "$D/povray.csv"
   done
 fi
+fi
 
 # Tracing compiled in but off (docs/tracing.md): steps 05 and 08 built again
 # with the hooks compiled out (make TRACE_OFF=1, in build/bench-notrace), the
 # two builds run in turn, medians and the median of the pairs' ratios.
 NT=build/bench-notrace
+if part tracing; then
 echo "step,pairs,trace_with_hooks,trace_without,trace_ratio,wall_with_hooks,wall_without,wall_ratio" > "$D/trace-off.csv"
-if make --no-print-directory BUILD=$NT TRACE_OFF=1 $NT/bin/05-shadows $NT/bin/08-area-lights \
+if { [ -n "$PREBUILT" ] && [ -x "$NT/bin/05-shadows" ] && [ -x "$NT/bin/08-area-lights" ]; } ||
+   make --no-print-directory BUILD=$NT TRACE_OFF=1 $NT/bin/05-shadows $NT/bin/08-area-lights \
      >"$B/notrace.log" 2>&1; then
   log "tracing off: steps 05 and 08, with and without the hooks, in turn ($((2 * RUNS)) pairs)"
   for s in 05-shadows 08-area-lights; do
@@ -116,10 +130,12 @@ if make --no-print-directory BUILD=$NT TRACE_OFF=1 $NT/bin/05-shadows $NT/bin/08
 else
   log "tracing off: the build without hooks failed ($B/notrace.log)"
 fi
+fi
 
 # Step 05's one-sample frame against POV-Ray's, the two run in turn (ours,
 # POV-Ray, ours, ...) so that a change of the machine's load hits both: the
 # headline's figures.
+if part step05; then
 echo "renderer,threads,trace_med,wall_med" > "$D/step05.csv"
 if [ -n "$POV" ] && have 05-shadows; then
   log "step 05 and POV-Ray in turn ($RUNS pairs)"
@@ -133,6 +149,7 @@ if [ -n "$POV" ] && have 05-shadows; then
     echo "ours,$t,$(cut -d' ' -f1 <<<"$o" | med),$(cut -d' ' -f3 <<<"$o" | med)" >> "$D/step05.csv"
     echo "povray,$t,$(cut -d' ' -f1 <<<"$p" | med),$(cut -d' ' -f2 <<<"$p" | med)" >> "$D/step05.csv"
   done
+fi
 fi
 
 # ---------------------------------------------------------------- error
@@ -151,7 +168,7 @@ err_pov() { # CSV "REF..." LABEL THREADS ARGS...
   read -r tm _ _ wm _ _ < <(pov_n "$ERUNS" +W$W +H$H +WT$t +FN16 File_Gamma=1.0 +Oe.png "$@")
   echo "povray,$label,$t,$tm,$wm,$("$B/rmse" "$B/e.png" $ref)" >> "$csv"
 }
-if have 07-antialiasing; then
+if part error07 && have 07-antialiasing; then
   log "run time against error, step 07 (${W}x$H)"
   echo "$EH" > "$D/error-07.csv"
   r07=$(ref_ours 07-antialiasing --width $W --height $H --threads "$ALL" --samples 512 \
@@ -184,7 +201,7 @@ povargs08() {
   echo "-A Declare=Step=8 Declare=AreaN=$n Declare=AreaAdaptive=$ad$([[ "$x" == *jitter* ]] &&
     echo " Declare=AreaJitter=1")"
 }
-if have 08-area-lights; then
+if part error08 && have 08-area-lights; then
   log "run time against error, step 08 (${W}x$H, 1 camera sample)"
   echo "$EH" > "$D/error-08.csv"
   # One camera sample, so that only the light's sampling differs from the
@@ -233,8 +250,8 @@ best() { # CSV RENDERER -> the setting with the least trace time at RMSE <= 5e-4
 args07() { case "$1" in "sobol n="*) echo "--sampler sobol --samples ${1#sobol n=} --adaptive 0";;
   "adaptive n="*) local x=${1#adaptive n=}; echo "--samples ${x% T=*} --adaptive ${x#* T=}";; esac; }
 args08() { echo "--samples 1 --sampler ${1% light-samples=*} --light-samples ${1#*light-samples=} --adaptive 0"; }
-log "threads: 1 $TLIST"
-echo "picture,renderer,setting,threads,trace_med,wall_med" > "$D/threads.csv"
+part threads && log "threads: 1 $TLIST" &&
+  echo "picture,renderer,setting,threads,trace_med,wall_med" > "$D/threads.csv"
 thread_row() { # PICTURE RENDERER SETTING THREADS -> one row
   local pic=$1 who=$2 set=$3 t=$4 a b
   # One run of a setting that took more than 5 s in the error sweep.
@@ -262,6 +279,7 @@ thread_row() { # PICTURE RENDERER SETTING THREADS -> one row
   fi
   echo "$pic,$who,$set,$t,$a,$b" >> "$D/threads.csv"
 }
+if part threads; then
 b07o=$(best "$D/error-07.csv" ours 2>/dev/null); b08o=$(best "$D/error-08.csv" ours 2>/dev/null)
 b07p=$(best "$D/error-07.csv" povray 2>/dev/null); b08p=$(best "$D/error-08.csv" povray 2>/dev/null)
 for t in 1 $TLIST; do
@@ -273,9 +291,10 @@ for t in 1 $TLIST; do
   [ -n "$b07p" ] && thread_row "07 best setting" povray "$b07p" "$t"
   [ -n "$b08p" ] && thread_row "08 best setting" povray "$b08p" "$t"
 done
+fi
 
 # ---------------------------------------------------------------- spheres
-if have 05-shadows; then
+if part scaling && have 05-shadows; then
   log "scaling (step 05, 2 threads, 10 .. 10^6 spheres)"
   echo "spheres,trace_med,trace_min,trace_max,wall_med,wall_min,wall_max" > "$D/scaling.csv"
   for n in 10 100 1000 10000 100000 1000000; do
@@ -298,4 +317,4 @@ if have 05-shadows; then
 fi
 
 t_total=$(awk -v a="$t_start" -v b="$EPOCHREALTIME" 'BEGIN {printf "%.0f", b - a}')
-bench/report.sh "$t_total" "$POV" "$ALL" "$load_start $(cut -d' ' -f1 /proc/loadavg)"
+part report && bench/report.sh "$t_total" "$POV" "$ALL" "$load_start $(cut -d' ' -f1 /proc/loadavg)"
