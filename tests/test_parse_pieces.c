@@ -1,6 +1,7 @@
 /* The parse of a large scene in pieces at once (common/app/parser_load.c)
  * against the one-piece parse: the same scene, or the same message, for
  * every scene file of the repository. docs/reliability.md, "Large scenes". */
+#define _DEFAULT_SOURCE /* mkstemp */
 #include "check.h"
 
 #include <dirent.h>
@@ -103,5 +104,106 @@ Test(parse_pieces, pieces_in_parallel_parse_as_the_whole)
     }
     closedir(dir);
   }
+  CHECK_DONE(&c);
+}
+
+/* Shapes that name materials defined only further down, so that in every
+ * piece but the last the names are forward references (each piece keeps each
+ * name once, docs/reliability.md, "Second pass"), and, when `undefined`, one
+ * name that is never defined: the same scene, or the same message, in 2 to 9
+ * pieces as whole. */
+static void forward_references(Check *c, bool undefined)
+{
+  static char text[1 << 16];
+  size_t len = 0;
+  len += (size_t)snprintf(text + len, sizeof text - len, "film 8 6\n");
+  for (int k = 0; k < 600; k++)
+    len += (size_t)snprintf(text + len, sizeof text - len,
+                            "sphere center %d 0 -5 radius 0.5 material m%d\n", k, k % 7);
+  if (undefined)
+    len += (size_t)snprintf(text + len, sizeof text - len,
+                            "sphere center 0 1 -5 radius 0.5 material nowhere\n");
+  for (int k = 0; k < 7; k++)
+    len += (size_t)snprintf(text + len, sizeof text - len, "material m%d diffuse 0.%d 0.5 0.5\n",
+                            k, k + 1);
+  char whole_err[512], piece_err[512];
+  Scene whole, pieces;
+  bool ok = parse_in_pieces(text, len, 1, &whole, whole_err, sizeof whole_err);
+  CHECK_THAT(c, ok == !undefined && (undefined || whole.n_instances == 600),
+             "forward references%s, whole: expected %s, got %s%.200s",
+             undefined ? " and an undefined name" : "", undefined ? "an error" : "600 shapes",
+             ok ? "a scene" : "", whole_err);
+  for (int k = 0; ok && k < whole.n_instances; k++)
+    CHECK_THAT(c, whole.instances[k].material == k % 7,
+               "forward references, whole: shape %d: expected material %d, got %d", k, k % 7,
+               whole.instances[k].material);
+  for (int chunks = 2; chunks <= 9; chunks++) {
+    bool ok_p = parse_in_pieces(text, len, chunks, &pieces, piece_err, sizeof piece_err);
+    CHECK_THAT(c, ok == ok_p && strcmp(whole_err, piece_err) == 0 &&
+               (!ok || same_scene(&whole, &pieces)),
+               "forward references in %d pieces: expected %s%.200s, got %s%.200s", chunks,
+               ok ? "the whole parse's scene" : "the whole parse's error: ", whole_err,
+               ok_p ? (ok ? "a different scene" : "a scene") : "", piece_err);
+    if (ok_p)
+      scene_free(&pieces);
+  }
+  if (ok)
+    scene_free(&whole);
+}
+
+Test(parse_pieces, forward_references_resolve_as_in_the_whole)
+{
+  Check c = CHECK("parser_load_chunks", "docs/reliability.md, \"Second pass\"");
+  forward_references(&c, false);
+  forward_references(&c, true);
+  CHECK_DONE(&c);
+}
+
+/* A scene file of 8 MB or more is mapped, not read into a buffer: nothing
+ * follows its last byte. Such files, one ending in a newline and one whose
+ * last line has none and ends exactly at a page boundary, parse as their
+ * text does. */
+Test(parse_pieces, a_mapped_file_parses_as_its_text, .timeout = 120)
+{
+  Check c = CHECK("parser_load_file", "docs/scene-format.md, \"Errors\"");
+  size_t cap = 10u << 20;
+  char *text = malloc(cap);
+  cr_assert(text);
+  for (int last_newline = 0; last_newline < 2; last_newline++) {
+    size_t len = (size_t)snprintf(text, cap, "film 8 6\nmaterial m diffuse 1 1 1\n");
+    for (int k = 0; len < (9u << 20); k++)
+      len += (size_t)snprintf(text + len, cap - len, "sphere center %d.25 0 -5 radius 0.5 "
+                              "material m\n", k % 1000);
+    /* Spaces before the last word, so that the file ends at a 4096-byte
+     * boundary right after it (or after its newline). */
+    size_t tail = last_newline ? 1 : 0, want = (len + 64 + 4095) / 4096 * 4096;
+    len += (size_t)snprintf(text + len, cap - len, "sphere center 1 2 -3 radius 0.5 material");
+    while (len + 1 + tail < want)
+      text[len++] = ' ';
+    text[len++] = 'm';
+    if (tail)
+      text[len++] = '\n';
+    char path[] = "/tmp/rt-mapped-XXXXXX";
+    int fd = mkstemp(path);
+    cr_assert(fd >= 0);
+    cr_assert(write(fd, text, len) == (ssize_t)len);
+    close(fd);
+    Scene from_file, from_text;
+    scene_init(&from_file);
+    scene_init(&from_text);
+    bool ok_f = parser_load_file(path, &from_file);
+    bool ok_t = parser_load_text(path, text, len, &from_text);
+    unlink(path);
+    CHECK_THAT(&c, ok_f && ok_t && len % 4096 == 0 && same_scene(&from_file, &from_text) &&
+               from_file.instances[from_file.n_instances - 1].sphere.center.y == 2.0f,
+               "a %zu-byte file %s a final newline: expected the scene of its text, got %s",
+               len, last_newline ? "with" : "without",
+               !ok_f ? "an error" : !ok_t ? "an error from the text" : "a different scene");
+    if (ok_f)
+      scene_free(&from_file);
+    if (ok_t)
+      scene_free(&from_text);
+  }
+  free(text);
   CHECK_DONE(&c);
 }
