@@ -14,6 +14,7 @@
 #include "app/cli.h"
 #include "app/image.h"
 #include "app/parser.h"
+#include "app/parser_state.h"
 #include "sampler.h"
 
 static Step step08;
@@ -66,13 +67,37 @@ static void same_answers(Scene *s, Ray r)
   }
 }
 
+/* The text parsed in 2 or 3 pieces at once (what a large file gets) must
+ * give what the whole parse gave: the same verdict and the same shapes, each
+ * with its material (forward references resolved across pieces). */
+static void same_in_pieces(const uint8_t *data, size_t size, bool ok, const Scene *whole)
+{
+  Scene p;
+  scene_init(&p);
+  bool ok_p = parser_load_chunks("fuzz.scene", (const char *)data, size, &p, 2 + (int)(size % 2));
+  if (ok_p != ok)
+    bug("the parse in pieces and the whole parse disagree on the text's validity");
+  if (!ok)
+    return;
+  if (p.n_instances != whole->n_instances || p.n_shapes != whole->n_shapes ||
+      p.n_materials != whole->n_materials || p.n_lights != whole->n_lights)
+    bug("the parse in pieces counts other shapes, materials or lights");
+  for (int k = 0; k < p.n_instances; k++)
+    if (p.instances[k].shape != whole->instances[k].shape ||
+        p.instances[k].material != whole->instances[k].material)
+      bug("the parse in pieces gives a shape another shape or material");
+  scene_free(&p);
+}
+
 void fuzz_scene(const uint8_t *data, size_t size)
 {
   static const char *const layouts[] = {"bvh", "flat", ""};
   setenv("RT_ACCEL", layouts[size % 3], 1); /* any sphere count in each layout */
   Scene s;
   scene_init(&s);
-  if (!parser_load_text("fuzz.scene", (const char *)data, size, &s))
+  bool ok = parser_load_text("fuzz.scene", (const char *)data, size, &s);
+  same_in_pieces(data, size, ok, &s);
+  if (!ok)
     return;
   if (scene_prepare(&s, step08_get()->features) && accel_build(&s)) {
     for (int k = 0; k < 25; k++)
