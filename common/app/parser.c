@@ -160,7 +160,7 @@ static int forward_name(Parser *p, const char *name, int len)
   int id = names_find(&p->forward_names, forward_records(p), name, len);
   if (id >= 0)
     return id;
-  if ((p->n_forward & (p->n_forward - 1)) == 0) {
+  if (!p->forward || (p->n_forward & (p->n_forward - 1)) == 0) {
     ForwardName *bigger = realloc(p->forward, sizeof *bigger *
                                   (size_t)(p->n_forward ? 2 * p->n_forward : 4));
     if (!bigger) {
