@@ -70,7 +70,7 @@ enum { MAP_FROM = 8 << 20 }; /* bytes: a regular file this large is mapped */
 
 /* Map the `size` bytes of a regular file, read in at once (MAP_POPULATE):
  * no copy, and about 1 000 page faults for 74 MB where reading into a new
- * buffer takes 18 000 (docs/performance.md, "Large scenes"). */
+ * buffer takes 18 000 (docs/reliability.md, "Large scenes"). */
 static bool map_file(int fd, size_t size, TextFile *f)
 {
   void *p = mmap(NULL, size, PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd, 0);
