@@ -33,7 +33,8 @@ static bool values_fast(const Lexer *lx, KeyKind kind, vec3s *v)
   for (int k = 0; k < n; k++) {
     const Token *t = &lx->tok[lx->pos + k];
     if (number_parse(t->s, t->len, &v->raw[k]) != NUMBER_OK ||
-        (kind == KEY_COLOR && v->raw[k] < 0.0f) ||
+        (kind == KEY_COLOR && !(v->raw[k] >= 0.0f && v->raw[k] <= LEXER_MAX_COLOR)) ||
+        (kind == KEY_POWER && !(v->raw[k] >= 0.0f && v->raw[k] <= LEXER_MAX_POWER)) ||
         (kind == KEY_POINT && !(fabsf(v->raw[k]) <= LEXER_MAX_COORD)))
       return false;
   }
@@ -44,8 +45,9 @@ static bool values_fast(const Lexer *lx, KeyKind kind, vec3s *v)
 static bool values_slow(Lexer *lx, const Key *key, vec3s *v)
 {
   char what[96] = "";
-  append(what, sizeof what, key->kind == KEY_NUM     ? "a number"
-                            : key->kind == KEY_COLOR ? "3 numbers >= 0" : "3 numbers");
+  bool nonneg = key->kind == KEY_COLOR || key->kind == KEY_POWER;
+  append(what, sizeof what, key->kind == KEY_NUM ? "a number"
+                            : nonneg             ? "3 numbers >= 0" : "3 numbers");
   append(what, sizeof what, " after '");
   append(what, sizeof what, key->name);
   append(what, sizeof what, "'");
@@ -53,7 +55,9 @@ static bool values_slow(Lexer *lx, const Key *key, vec3s *v)
     return lexer_number(lx, what, false, &v->x);
   for (int k = 0; k < 3; k++) {
     int col = lx->pos < lx->n ? lx->tok[lx->pos].col : lx->end_col;
-    if (!lexer_number(lx, what, key->kind == KEY_COLOR, &v->raw[k]))
+    if (!lexer_number(lx, what, nonneg, &v->raw[k]))
+      return false;
+    if (nonneg && !lexer_at_most(lx, col, what, v->raw[k], key->kind == KEY_POWER))
       return false;
     if (key->kind == KEY_POINT && !(fabsf(v->raw[k]) <= LEXER_MAX_COORD))
       return lexer_fail(lx, col, "expected a coordinate from -1e18 to 1e18 after '%s' "

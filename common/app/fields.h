@@ -9,7 +9,8 @@
 typedef enum KeyKind {
   KEY_POINT,  /* three coordinates, each at most LEXER_MAX_COORD in magnitude */
   KEY_VEC,    /* three numbers (a direction: the statement checks its length) */
-  KEY_COLOR,  /* three numbers >= 0 */
+  KEY_COLOR,  /* three numbers from 0 to LEXER_MAX_COLOR */
+  KEY_POWER,  /* three numbers from 0 to LEXER_MAX_POWER (a light's power) */
   KEY_NUM,    /* one number */
   KEY_NAME,   /* a material name */
 } KeyKind;

@@ -269,12 +269,15 @@ bool lexer_number(Lexer *lx, const char *what, bool nonneg, float *out)
   return true;
 }
 
-bool lexer_vec(Lexer *lx, const char *what, bool nonneg, vec3s *out)
+bool lexer_at_most(Lexer *lx, int col, const char *what, float v, bool power)
 {
-  for (int k = 0; k < 3; k++)
-    if (!lexer_number(lx, what, nonneg, &out->raw[k]))
-      return false;
-  return true;
+  if (v <= (power ? LEXER_MAX_POWER : LEXER_MAX_COLOR))
+    return true;
+  const Token *t = &lx->tok[lx->pos - 1];
+  return lexer_fail(lx, col, "expected %s, found '%.*s', above %s, the most %s may be (a "
+                    "colour times a light must fit in a float)", what, t->len, t->s,
+                    power ? "1e18" : "1e9",
+                    power ? "a light's power" : "a colour or an irradiance");
 }
 
 /* A whole number in [lo, hi]. */

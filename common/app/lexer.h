@@ -16,6 +16,13 @@ enum { LEXER_MAX_TOKENS = 64, LEXER_TOKEN_MAX = 64 };
  * a float (docs/scene-format.md, "Limits"). */
 #define LEXER_MAX_COORD 1e18f
 #define LEXER_MIN_LENGTH 1e-18f
+/* A colour (a material's, the ambient light, a directional light's
+ * irradiance) is at most LEXER_MAX_COLOR, a point or area light's power at
+ * most LEXER_MAX_POWER: a colour times a colour, or times a light's power
+ * over any distance the scene's scale allows, fits in a float
+ * (docs/scene-format.md, "Limits"). */
+#define LEXER_MAX_COLOR 1e9f
+#define LEXER_MAX_POWER 1e18f
 
 typedef struct Token {
   const char *s; /* into the text, not terminated */
@@ -61,7 +68,11 @@ bool lexer_fail_unknown(const Lexer *lx, const char *what,
 
 /* Readers of the next word(s). `what` names the value in messages. */
 bool lexer_number(Lexer *lx, const char *what, bool nonneg, float *out);
-bool lexer_vec(Lexer *lx, const char *what, bool nonneg, vec3s *out);
+
+/* The colour (or, when `power`, the light's power) just read, v at column
+ * col, is at most LEXER_MAX_COLOR (LEXER_MAX_POWER); false (printed) when
+ * above. `what` names what was expected, as for lexer_number. */
+bool lexer_at_most(Lexer *lx, int col, const char *what, float v, bool power);
 bool lexer_int(Lexer *lx, const char *what, int lo, int hi, int *out);
 /* A name (letter or '_', then letters, digits, '_'), as a token of the text. */
 bool lexer_name(Lexer *lx, const char *what, int max_len, Token *out);

@@ -7,7 +7,7 @@
 
 static bool light_point(Lexer *lx, Light *light)
 {
-  static const Key keys[] = {{"position", KEY_POINT, true}, {"power", KEY_COLOR, true},
+  static const Key keys[] = {{"position", KEY_POINT, true}, {"power", KEY_POWER, true},
                              {"radius", KEY_NUM, false}};
   Field f[3];
   if (!fields_read(lx, "point light", keys, 3, f) ||
@@ -33,7 +33,7 @@ static bool light_directional(Lexer *lx, Light *light)
 static bool light_area(Lexer *lx, Light *light)
 {
   static const Key keys[] = {{"corner", KEY_POINT, true}, {"edge1", KEY_POINT, true},
-                             {"edge2", KEY_POINT, true}, {"power", KEY_COLOR, true}};
+                             {"edge2", KEY_POINT, true}, {"power", KEY_POWER, true}};
   Field f[4];
   if (!fields_read(lx, "area light", keys, 4, f) ||
       !bounds_edges(lx, &f[1], &f[2]))

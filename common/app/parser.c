@@ -48,12 +48,21 @@ static bool st_film(Parser *p)
   return true;
 }
 
+/* `ambient` (a light: at most LEXER_MAX_COLOR, as a colour) or `background`
+ * (seen as it is: any finite value >= 0). */
 static bool st_colour(Parser *p, int which, const char *word, vec3s *out)
 {
   char what[64];
   snprintf(what, sizeof what, "3 numbers >= 0 after '%s'", word);
-  return once(p, which, word) && lexer_vec(&p->lx, what, true, out) &&
-         lexer_expect_end(&p->lx);
+  if (!once(p, which, word))
+    return false;
+  for (int k = 0; k < 3; k++) {
+    int col = p->lx.pos < p->lx.n ? p->lx.tok[p->lx.pos].col : p->lx.end_col;
+    if (!lexer_number(&p->lx, what, true, &out->raw[k]) ||
+        (which == ONCE_AMBIENT && !lexer_at_most(&p->lx, col, what, out->raw[k], false)))
+      return false;
+  }
+  return lexer_expect_end(&p->lx);
 }
 
 static bool st_count(Parser *p, int which, const char *word, int *out)
