@@ -1,6 +1,6 @@
-/* A whole file read into memory as text (the scene files, step 02), never a
- * truncated one: a file that does not fit is an error, not a shorter text.
- * docs/scene-format.md, "Errors". */
+/* A whole file in memory as text (the scene files, step 02): read, or mapped
+ * when large; never a truncated one: a file that does not fit is an error,
+ * not a shorter text. docs/scene-format.md, "Errors". */
 #ifndef RT_TEXTFILE_H
 #define RT_TEXTFILE_H
 
