@@ -142,24 +142,22 @@ static NameRecords forward_records(const Parser *p)
   return (NameRecords){p->forward ? p->forward[0].name : "", sizeof(ForwardName)};
 }
 
-/* Room for n more pending references (the array's capacity is the power of
- * two at or above its count); false when out of memory. */
+/* Room for n more pending references (the array doubles as it fills); false
+ * when out of memory. */
 static bool pending_reserve(Parser *p, int n)
 {
-  size_t cap = 4;
-  while (cap < (size_t)p->n_pending + (size_t)n)
-    cap *= 2;
-  size_t now = 4;
-  while (now < (size_t)p->n_pending)
-    now *= 2;
-  if (p->pending && cap <= now)
+  size_t need = (size_t)p->n_pending + (size_t)n, cap = p->pending_cap ? p->pending_cap : 4;
+  if (need <= p->pending_cap)
     return true;
+  while (cap < need)
+    cap *= 2;
   Pending *bigger = realloc(p->pending, cap * sizeof *bigger);
   if (!bigger) {
     fprintf(stderr, "parser: out of memory\n");
     return false;
   }
   p->pending = bigger;
+  p->pending_cap = cap;
   return true;
 }
 
@@ -346,4 +344,5 @@ void parser_end(Parser *p)
   p->pending = NULL;
   p->forward = NULL;
   p->n_pending = p->n_forward = 0;
+  p->pending_cap = 0;
 }
