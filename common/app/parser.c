@@ -201,7 +201,7 @@ bool parser_pending_merge(Parser *p, const Parser *q, int first_instance)
     const char *name = q->forward[k].name;
     ok = (map[k] = forward_name(p, name, (int)strlen(name))) >= 0;
   }
-  if (ok) {
+  if (ok && q->n_pending > 0) { /* p->pending may still be NULL when none */
     Pending *to = p->pending + p->n_pending;
     for (int k = 0; k < q->n_pending; k++) {
       to[k] = q->pending[k];
