@@ -150,12 +150,16 @@ static bool add_light_shapes(Scene *scene, unsigned features)
   return true;
 }
 
-/* info.ambient: whether some lit shape's m_amb l_amb is non-zero. */
+/* info.ambient: whether some lit shape's m_amb l_amb is non-zero (no look at
+ * the shapes when the ambient light is off, none after the first). */
 static void analyze(Scene *scene)
 {
-  for (int k = 0; k < scene->n_shapes; k++) {
+  for (int k = 0; k < scene->n_shapes && !vec_is_zero(scene->ambient); k++) {
     const Material *m = &scene->materials[scene->instances[k].material];
-    scene->info.ambient |= !vec_is_zero(glms_vec3_mul(m->ambient, scene->ambient));
+    if (!vec_is_zero(glms_vec3_mul(m->ambient, scene->ambient))) {
+      scene->info.ambient = true;
+      return;
+    }
   }
 }
 

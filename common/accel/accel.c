@@ -184,16 +184,18 @@ static int layout_wanted(void)
        : strcmp(env, "bvh") == 0  ? 2 : -1;
 }
 
-/* Sphere k's box, padded by a relative 2^-16 of the radius and 2^-20 of the
+/* A sphere's box, padded by a relative 2^-16 of the radius and 2^-20 of the
  * coordinates' magnitude so that a grazing ray sphere_hit_t accepts is never
  * culled by it. */
-static void sphere_box(const Sphere *s, float lo[3], float hi[3])
+static Box sphere_box(const Sphere *s)
 {
   float pad = 0x1p-16f * s->radius + 0x1p-20f * (vec_max_abs(s->center) + s->radius);
+  Box b = {{0.0f, 0.0f, 0.0f, 0.0f}, {0.0f, 0.0f, 0.0f, 0.0f}};
   for (int a = 0; a < 3; a++) {
-    lo[a] = s->center.raw[a] - s->radius - pad;
-    hi[a] = s->center.raw[a] + s->radius + pad;
+    b.lo[a] = s->center.raw[a] - s->radius - pad;
+    b.hi[a] = s->center.raw[a] + s->radius + pad;
   }
+  return b;
 }
 
 static int compare_int(const void *a, const void *b)
@@ -207,26 +209,25 @@ static int compare_int(const void *a, const void *b)
  * spheres in instance order. */
 static bool build_tree(Accel *acc, const Scene *scene, const int *ids, int n, bool flat)
 {
-  float(*lo)[3] = malloc((size_t)n * sizeof *lo), (*hi)[3] = malloc((size_t)n * sizeof *hi);
+  Box *boxes = malloc((size_t)n * sizeof *boxes);
   Bvh bvh = {0};
-  bool ok = lo && hi;
+  bool ok = boxes != NULL;
 #pragma omp parallel for schedule(static) if (ok && n > 65536)
   for (int k = 0; k < (ok ? n : 0); k++)
-    sphere_box(&scene->instances[ids[k]].sphere, lo[k], hi[k]);
-  ok = ok && bvh_build(&bvh, (const float(*)[3])lo, (const float(*)[3])hi, n,
-                       flat ? n : LEAF_MAX);
-  free(lo);
-  free(hi);
+    boxes[k] = sphere_box(&scene->instances[ids[k]].sphere);
+  ok = ok && bvh_build(&bvh, boxes, n, flat ? n : LEAF_MAX);
+  free(boxes);
   if (!ok)
     return false;
   acc->spheres = bvh.order; /* leaf order, as indices into ids: map them */
 #pragma omp parallel for schedule(static) if (n > 65536)
   for (int k = 0; k < n; k++)
     acc->spheres[k] = ids[acc->spheres[k]];
-  for (int k = 0; k < bvh.n_nodes; k++)
-    if (bvh.nodes[k].meta > 1)
-      qsort(acc->spheres + bvh.nodes[k].index, (size_t)bvh.nodes[k].meta, sizeof(int),
-            compare_int);
+  if (bvh.n_nodes < 2 * n - 1) /* else every leaf holds one sphere */
+    for (int k = 0; k < bvh.n_nodes; k++)
+      if (bvh.nodes[k].meta > 1)
+        qsort(acc->spheres + bvh.nodes[k].index, (size_t)bvh.nodes[k].meta, sizeof(int),
+              compare_int);
   acc->nodes = bvh.nodes;
   return true;
 }

@@ -5,7 +5,8 @@
  * then each cluster's subtree over its own boxes (a tenth of the work of one
  * build over 10^6 boxes, for trees about as good). Large subtrees are OpenMP
  * tasks; the tree is the same for any thread count: each subtree owns a fixed
- * block of nodes, and the blocks' unused slots are squeezed out at the end. */
+ * block of nodes, and the blocks' unused slots (where a leaf holds several
+ * boxes) are squeezed out at the end. */
 #include "accel/bvh.h"
 
 #include <stdint.h>
@@ -18,7 +19,7 @@
 
 enum {
   CLUSTER_FROM = 16384, /* fewer boxes: one build over all of them */
-  CLUSTER = 8,          /* most boxes in a cluster */
+  CLUSTER = 16,         /* most boxes in a cluster */
 };
 
 /* ---------------------------------------------------------------- the build */
@@ -59,17 +60,18 @@ static bool squeeze(BvhNode **nodes, int n, int *n_nodes)
   return true;
 }
 
-/* The subtree of a cluster (at most CLUSTER boxes in Morton order, so
- * neighbours in space): halved by count down to single boxes, like the
- * tree above, its children's slots from `block` on. Cheap, and for so few
+/* The subtree of a cluster (boxes ids[first .. first + count), at most
+ * CLUSTER neighbours in Morton order): halved by count down to single
+ * boxes, its children's slots from `block` on. Cheap, and for so few
  * boxes as good as the heuristic (the trees' surface-area costs differ by
  * about 0.1 %). */
 static void build_cluster(SahBuild *b, int node, int first, int count, int block)
 {
   Box box = sah_box_empty(), cb = sah_box_empty();
   for (int k = first; k < first + count; k++) {
-    Box c = {b->items[k].lo + b->items[k].hi, b->items[k].lo + b->items[k].hi};
-    sah_box_grow(&box, &b->items[k]);
+    const Box *it = &b->items[b->ids[k]];
+    Box c = {it->lo + it->hi, it->lo + it->hi};
+    sah_box_grow(&box, it);
     sah_box_grow(&cb, &c);
   }
   BvhNode *nd = &b->nodes[node];
@@ -95,13 +97,13 @@ static void build_cluster(SahBuild *b, int node, int first, int count, int block
 /* What the build over the clusters needs, one array each (m entries). */
 typedef struct Top {
   Box *boxes;
-  int *ids, *weight, *leaf_node, *leaf_block, *offset;
+  int *ids, *weight, *leaf_node, *leaf_block;
 } Top;
 
 static bool top_alloc(Top *t, int m)
 {
   t->boxes = malloc((size_t)m * sizeof *t->boxes);
-  int **arrays[] = {&t->ids, &t->weight, &t->leaf_node, &t->leaf_block, &t->offset};
+  int **arrays[] = {&t->ids, &t->weight, &t->leaf_node, &t->leaf_block};
   bool ok = t->boxes != NULL;
   for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; k++)
     ok = (*arrays[k] = malloc((size_t)m * sizeof(int))) != NULL && ok;
@@ -115,51 +117,26 @@ static void top_free(Top *t)
   free(t->weight);
   free(t->leaf_node);
   free(t->leaf_block);
-  free(t->offset);
 }
 
-/* Move the boxes of each cluster, in the top tree's leaf order, to one
- * block: offset[p] is where the p-th leaf's boxes start. */
-static bool gather(SahBuild *b, int n, const MortonRuns *c, Top *t)
-{
-  Box *items = malloc((size_t)n * sizeof *items);
-  int *ids = malloc((size_t)n * sizeof *ids);
-  if (!items || !ids) {
-    free(items);
-    free(ids);
-    return false;
-  }
-  for (int p = 0, sum = 0; p < c->n; p++) {
-    t->offset[p] = sum;
-    sum += c->count[t->ids[p]];
-  }
-#pragma omp parallel for schedule(static)
-  for (int p = 0; p < c->n; p++) {
-    int k = t->ids[p];
-    memcpy(items + t->offset[p], b->items + c->first[k], (size_t)c->count[k] * sizeof *items);
-    memcpy(ids + t->offset[p], b->ids + c->first[k], (size_t)c->count[k] * sizeof *ids);
-  }
-  free(b->items);
-  free(b->ids);
-  b->items = items;
-  b->ids = ids;
-  return true;
-}
-
-/* The tree over the clusters of the Morton-sorted boxes (codes `sorted`),
- * then each cluster's subtree over its boxes. */
+/* The tree over the clusters of the boxes in Morton order (b->ids, codes
+ * `sorted`), then each cluster's subtree over its boxes. The boxes stay
+ * where they are: leaves index b->ids. */
 static bool build_clustered(SahBuild *b, int n, const uint32_t *sorted)
 {
   MortonRuns c = {malloc((size_t)n * sizeof(int)), malloc((size_t)n * sizeof(int)), 0};
   Top t = {0};
-  bool ok = c.first && c.count && top_alloc(&t, n);
+  bool ok = c.first && c.count;
   if (ok) {
     morton_runs(sorted, 0, n, CLUSTER, &c);
+    ok = top_alloc(&t, c.n);
+  }
+  if (ok) {
 #pragma omp parallel for schedule(static)
     for (int k = 0; k < c.n; k++) {
       t.boxes[k] = sah_box_empty();
       for (int j = c.first[k]; j < c.first[k] + c.count[k]; j++)
-        sah_box_grow(&t.boxes[k], &b->items[j]);
+        sah_box_grow(&t.boxes[k], &b->items[b->ids[j]]);
       t.weight[k] = c.count[k];
       t.ids[k] = k;
     }
@@ -168,12 +145,9 @@ static bool build_clustered(SahBuild *b, int n, const uint32_t *sorted)
 #pragma omp parallel
 #pragma omp single
     sah_build_node(&top, 0, 0, c.n, 0, 1);
-    ok = gather(b, n, &c, &t);
-  }
-  if (ok) {
 #pragma omp parallel for schedule(dynamic, 256)
     for (int p = 0; p < c.n; p++)
-      build_cluster(b, t.leaf_node[p], t.offset[p], t.weight[p], t.leaf_block[p]);
+      build_cluster(b, t.leaf_node[p], c.first[t.ids[p]], c.count[t.ids[p]], t.leaf_block[p]);
   }
   free(c.first);
   free(c.count);
@@ -181,33 +155,27 @@ static bool build_clustered(SahBuild *b, int n, const uint32_t *sorted)
   return ok;
 }
 
-bool bvh_build(Bvh *bvh, const float (*lo)[3], const float (*hi)[3], int n,
-               int leaf_max)
+bool bvh_build(Bvh *bvh, Box *boxes, int n, int leaf_max)
 {
-  SahBuild b = {.leaf_max = leaf_max, .one_leaf = leaf_max >= n};
-  b.items = malloc((size_t)n * sizeof *b.items);
+  SahBuild b = {.items = boxes, .leaf_max = leaf_max, .one_leaf = leaf_max >= n};
   b.ids = malloc((size_t)n * sizeof *b.ids);
   b.nodes = malloc((size_t)(2 * n - 1) * sizeof *b.nodes);
   *bvh = (Bvh){0};
-  bool ok = b.items && b.ids && b.nodes;
-#pragma omp parallel for schedule(static) if (ok && n > 65536)
-  for (int k = 0; k < (ok ? n : 0); k++) {
-    b.items[k] = (Box){{lo[k][0], lo[k][1], lo[k][2], 0.0f},
-                       {hi[k][0], hi[k][1], hi[k][2], 0.0f}};
-    b.ids[k] = k;
-  }
+  bool ok = b.ids && b.nodes;
   int n_nodes = 0;
   if (ok && n > CLUSTER_FROM && !b.one_leaf) {
-    uint32_t *codes = NULL;
-    ok = morton_sort(&b, n, &codes) && build_clustered(&b, n, codes);
+    uint32_t *codes = malloc((size_t)n * sizeof *codes);
+    ok = codes && morton_sort(boxes, n, b.ids, codes) && build_clustered(&b, n, codes);
     free(codes);
+    n_nodes = 2 * n - 1; /* every leaf one box: no unused slot */
   } else if (ok) {
+    for (int k = 0; k < n; k++)
+      b.ids[k] = k;
 #pragma omp parallel if (n > 8192)
 #pragma omp single
     sah_build_node(&b, 0, 0, n, 0, 1);
+    ok = squeeze(&b.nodes, n, &n_nodes);
   }
-  ok = ok && squeeze(&b.nodes, n, &n_nodes);
-  free(b.items);
   if (!ok) {
     fprintf(stderr, "bvh: out of memory for %d boxes\n", n);
     free(b.nodes);
@@ -217,7 +185,6 @@ bool bvh_build(Bvh *bvh, const float (*lo)[3], const float (*hi)[3], int n,
   *bvh = (Bvh){.nodes = b.nodes, .n_nodes = n_nodes, .order = b.ids, .n_items = n};
   return true;
 }
-
 void bvh_free(Bvh *bvh)
 {
   free(bvh->nodes);

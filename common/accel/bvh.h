@@ -14,6 +14,14 @@ typedef struct BvhNode {
   int meta;
 } BvhNode;
 
+/* An item's bounds in 4 lanes (the 4th stays 0), as GCC/clang vectors: a box
+ * grows in a few vector instructions. */
+typedef float V4 __attribute__((vector_size(16)));
+typedef int I4 __attribute__((vector_size(16)));
+typedef struct Box {
+  V4 lo, hi;
+} Box;
+
 typedef struct Bvh {
   BvhNode *nodes; /* nodes[0] is the root; owned */
   int n_nodes;
@@ -21,12 +29,12 @@ typedef struct Bvh {
   int n_items;
 } Bvh;
 
-/* Build over n >= 1 boxes lo[k]..hi[k], leaves of at most leaf_max items
- * (leaf_max >= n: the root is one leaf of all of them).
- * Deterministic (same input, same tree). False (one line printed) when out of
- * memory; bvh is then empty. */
-bool bvh_build(Bvh *bvh, const float (*lo)[3], const float (*hi)[3], int n,
-               int leaf_max);
+/* Build over n >= 1 boxes, leaves of at most leaf_max items (leaf_max >= n:
+ * the root is one leaf of all of them). The boxes may be reordered; the
+ * caller still owns them. Deterministic (same input, same tree, for any
+ * number of threads). False (one line printed) when out of memory; bvh is
+ * then empty. */
+bool bvh_build(Bvh *bvh, Box *boxes, int n, int leaf_max);
 
 /* Free the tree; a second call is harmless. */
 void bvh_free(Bvh *bvh);

@@ -217,15 +217,43 @@ static float best_split(const SahBuild *b, int first, int count, const Box *cb,
   return best;
 }
 
-/* Move the items of bin < split_bin on `axis` to the front; returns the
- * first of the others. */
-static int split_items(SahBuild *b, int first, int count, const Box *cb, int axis,
-                       int split_bin)
+/* The two halves of a split node: where the right one starts, and each
+ * half's bounds, bounds of centres (c = lo + hi) and weighted count. */
+typedef struct Halves {
+  int mid;
+  Box box[2], cb[2];
+  int weight[2];
+} Halves;
+
+static void halves_empty(Halves *h)
+{
+  for (int s = 0; s < 2; s++) {
+    h->box[s] = h->cb[s] = sah_box_empty();
+    h->weight[s] = 0;
+  }
+}
+
+/* Count item k into half s. */
+static void halves_add(Halves *h, int s, const SahBuild *b, int k)
+{
+  const Box *it = &b->items[k];
+  Box c = {it->lo + it->hi, it->lo + it->hi};
+  sah_box_grow(&h->box[s], it);
+  sah_box_grow(&h->cb[s], &c);
+  h->weight[s] += weight_of(b, k);
+}
+
+/* Move the items of bin < split_bin on `axis` to the front, measuring the
+ * two halves on the way (each item is looked at once). */
+static void split_items(SahBuild *b, int first, int count, const Box *cb, int axis,
+                        int split_bin, Halves *h)
 {
   float scale = (float)BINS / (cb->hi[axis] - cb->lo[axis]);
   int i = first, j = first + count - 1;
+  halves_empty(h);
   while (i <= j) {
     if (bin_of(centre2(&b->items[i], axis), cb->lo[axis], scale) < split_bin) {
+      halves_add(h, 0, b, i);
       i++;
     } else {
       Box tmp = b->items[i];
@@ -239,40 +267,75 @@ static int split_items(SahBuild *b, int first, int count, const Box *cb, int axi
         b->weight[i] = b->weight[j];
         b->weight[j] = w;
       }
+      halves_add(h, 1, b, j);
       j--;
     }
   }
-  return i;
+  h->mid = i;
 }
 
-/* Split [first, first + count) in two; returns the first index of the right
- * half. Falls back to halving by count when the heuristic cannot separate
- * the items (all centres equal) or the tree is already deep (a pathological
- * distribution): depth stays below MAX_DEPTH + log2(n). */
-static int partition(SahBuild *b, int first, int count, const Box *cb, float area,
-                     int depth, bool *leaf)
+/* Split [first, first + count) in two (h: the halves); false when it
+ * stays a leaf. Falls back to halving by count when the heuristic cannot
+ * separate the items (all centres equal) or the tree is already deep (a
+ * pathological distribution): depth stays below MAX_DEPTH + log2(n). */
+static bool partition(SahBuild *b, int first, int count, const Box *cb, float area,
+                      int depth, Halves *h)
 {
   int axis = 0, split_bin = 0;
   float cost = depth < MAX_DEPTH && count > 1
                    ? best_split(b, first, count, cb, area, &axis, &split_bin)
                    : FLT_MAX;
-  *leaf = count <= b->leaf_max && !(cost < leaf_cost(count));
-  if (*leaf)
-    return first;
-  if (cost < FLT_MAX)
-    return split_items(b, first, count, cb, axis, split_bin);
-  return first + count / 2;
+  if (count <= b->leaf_max && !(cost < leaf_cost(count)))
+    return false;
+  if (cost < FLT_MAX) {
+    split_items(b, first, count, cb, axis, split_bin, h);
+    return true;
+  }
+  halves_empty(h);
+  h->mid = first + count / 2;
+  for (int k = first; k < first + count; k++)
+    halves_add(h, k >= h->mid, b, k);
+  return true;
 }
 
-/* The weighted count of items [first, first + count). */
-static int weight_sum(const SahBuild *b, int first, int count)
+/* sah_build_node, with the items' bounds `box` and their centres' `cb`
+ * (measured by the parent's split). */
+static void build_node(SahBuild *b, int node, int first, int count, int depth, int block,
+                       const Box *box, const Box *cb)
 {
-  if (!b->weight)
-    return count;
-  int sum = 0;
-  for (int k = first; k < first + count; k++)
-    sum += b->weight[k];
-  return sum;
+  Halves h;
+  bool leaf = count <= 1 || b->one_leaf ||
+              !partition(b, first, count, cb, box_area(box), depth, &h);
+  if (leaf && b->weight) { /* one cluster: its own build fills the node */
+    b->leaf_node[first] = node;
+    b->leaf_block[first] = block;
+    return;
+  }
+  BvhNode *nd = &b->nodes[node];
+  for (int a = 0; a < 3; a++) {
+    nd->lo[a] = box->lo[a];
+    nd->hi[a] = box->hi[a];
+  }
+  if (leaf) {
+    nd->index = first;
+    nd->meta = count;
+    return;
+  }
+  int axis = 0;
+  for (int a = 1; a < 3; a++)
+    if (cb->hi[a] - cb->lo[a] > cb->hi[axis] - cb->lo[axis])
+      axis = a;
+  nd->index = block;
+  nd->meta = -1 - axis;
+  int lc = h.mid - first, lw = h.weight[0];
+  if (lw > TASK_MIN) {
+#pragma omp task default(none) firstprivate(b, block, first, lc, depth, h)
+    build_node(b, block, first, lc, depth + 1, block + 2, &h.box[0], &h.cb[0]);
+  } else {
+    build_node(b, block, first, lc, depth + 1, block + 2, &h.box[0], &h.cb[0]);
+  }
+  build_node(b, block + 1, h.mid, count - lc, depth + 1, block + 2 * lw, &h.box[1],
+             &h.cb[1]);
 }
 
 void sah_build_node(SahBuild *b, int node, int first, int count, int depth, int block)
@@ -284,35 +347,5 @@ void sah_build_node(SahBuild *b, int node, int first, int count, int depth, int 
     sah_box_grow(&box, it);
     sah_box_grow(&cb, &c);
   }
-  bool leaf = count <= 1 || b->one_leaf;
-  int mid = leaf ? first : partition(b, first, count, &cb, box_area(&box), depth, &leaf);
-  if (leaf && b->weight) { /* one cluster: its own build fills the node */
-    b->leaf_node[first] = node;
-    b->leaf_block[first] = block;
-    return;
-  }
-  BvhNode *nd = &b->nodes[node];
-  for (int a = 0; a < 3; a++) {
-    nd->lo[a] = box.lo[a];
-    nd->hi[a] = box.hi[a];
-  }
-  if (leaf) {
-    nd->index = first;
-    nd->meta = count;
-    return;
-  }
-  int axis = 0;
-  for (int a = 1; a < 3; a++)
-    if (cb.hi[a] - cb.lo[a] > cb.hi[axis] - cb.lo[axis])
-      axis = a;
-  nd->index = block;
-  nd->meta = -1 - axis;
-  int lc = mid - first, lw = weight_sum(b, first, lc);
-  if (lw > TASK_MIN) {
-#pragma omp task default(none) firstprivate(b, block, first, lc, depth)
-    sah_build_node(b, block, first, lc, depth + 1, block + 2);
-  } else {
-    sah_build_node(b, block, first, lc, depth + 1, block + 2);
-  }
-  sah_build_node(b, block + 1, mid, count - lc, depth + 1, block + 2 * lw);
+  build_node(b, node, first, count, depth, block, &box, &cb);
 }

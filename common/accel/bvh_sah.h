@@ -8,15 +8,6 @@
 
 #include "accel/bvh.h"
 
-/* Bounds in 4 lanes (the 4th stays 0), as GCC/clang vectors: a box grows in
- * a few vector instructions. */
-typedef float V4 __attribute__((vector_size(16)));
-typedef int I4 __attribute__((vector_size(16)));
-
-typedef struct Box {
-  V4 lo, hi;
-} Box;
-
 /* A build over items (boxes), partitioned in place. With `weight`, item k
  * stands for weight[k] boxes (a cluster) and counts that much in the
  * heuristic and in the node blocks; each leaf is then one item, and

@@ -2,6 +2,7 @@
  * cubic grid, a radix sort, runs of neighbours. docs/performance.md. */
 #include "accel/morton.h"
 
+#include <omp.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -16,9 +17,9 @@ static uint32_t spread3(uint32_t x)
   return (x | x << 2) & 0x09249249u;
 }
 
-/* Morton codes of the box centres, on a cubic grid over their bounds (a
- * flat scene is not cut along its thin axis). */
-void morton_codes(const Box *items, int n, uint32_t *code)
+/* (code << 32 | k) for each box k: its centre's Morton code on a cubic grid
+ * over the centres' bounds (a flat scene is not cut along its thin axis). */
+static void morton_codes(const Box *items, int n, uint64_t *pair)
 {
   Box cb = sah_box_empty();
   float lo0 = cb.lo[0], lo1 = cb.lo[1], lo2 = cb.lo[2];
@@ -45,42 +46,66 @@ void morton_codes(const Box *items, int n, uint32_t *code)
       x = x > 0.0f ? x : 0.0f;
       q[a] = (uint32_t)(x < (float)((1 << MORTON_BITS) - 1) ? x : (1 << MORTON_BITS) - 1);
     }
-    code[k] = spread3(q[0]) << 2 | spread3(q[1]) << 1 | spread3(q[2]);
+    uint32_t code = spread3(q[0]) << 2 | spread3(q[1]) << 1 | spread3(q[2]);
+    pair[k] = (uint64_t)code << 32 | (uint32_t)k;
   }
 }
 
-/* order[0 .. n) sorted by code, ties in index order: three 10-bit radix
- * passes over (code, index) pairs, read in sequence. */
-bool morton_order(const uint32_t *code, int n, int *order)
+enum { BUCKETS = 1 << MORTON_BITS };
+
+/* One stable counting pass on the 10 bits at `shift`, from `in` to `out`:
+ * each of the team's threads counts, then moves, one block of the pairs;
+ * bucket by bucket, block t's pairs go after those of the blocks before it,
+ * so the result is the same for any number of threads. `count` holds
+ * BUCKETS ints a thread. Call it from every thread of a parallel region. */
+static void radix_pass(const uint64_t *in, uint64_t *out, int n, int shift, int *count)
 {
-  uint64_t *pair = malloc((size_t)n * sizeof *pair), *tmp = malloc((size_t)n * sizeof *tmp);
-  if (!pair || !tmp) {
-    free(pair);
-    free(tmp);
-    return false;
-  }
-  for (int k = 0; k < n; k++)
-    pair[k] = (uint64_t)code[k] << 32 | (uint32_t)k;
-  enum { BUCKETS = 1 << MORTON_BITS };
-  for (int shift = 32; shift < 32 + 3 * MORTON_BITS; shift += MORTON_BITS) {
-    int start[BUCKETS] = {0};
-    for (int k = 0; k < n; k++)
-      start[pair[k] >> shift & (BUCKETS - 1)]++;
-    for (int b = 0, sum = 0; b < BUCKETS; b++) {
-      int c = start[b];
-      start[b] = sum;
+  int threads = omp_get_num_threads(), t = omp_get_thread_num();
+  int first = (int)((long long)n * t / threads), last = (int)((long long)n * (t + 1) / threads);
+  int *mine = count + (size_t)t * BUCKETS;
+  memset(mine, 0, BUCKETS * sizeof *mine);
+  for (int k = first; k < last; k++)
+    mine[in[k] >> shift & (BUCKETS - 1)]++;
+#pragma omp barrier
+#pragma omp single
+  for (int b = 0, sum = 0; b < BUCKETS; b++)
+    for (int u = 0; u < threads; u++) {
+      int c = count[(size_t)u * BUCKETS + b];
+      count[(size_t)u * BUCKETS + b] = sum;
       sum += c;
     }
-    for (int k = 0; k < n; k++)
-      tmp[start[pair[k] >> shift & (BUCKETS - 1)]++] = pair[k];
-    uint64_t *swap = pair;
-    pair = tmp;
-    tmp = swap;
+  for (int k = first; k < last; k++)
+    out[mine[in[k] >> shift & (BUCKETS - 1)]++] = in[k];
+#pragma omp barrier
+}
+
+/* The pairs sorted by code, ties in index order (the index is the low half):
+ * three radix passes of 10 bits over the code half. */
+static bool sort_pairs(uint64_t **pair, int n)
+{
+  int threads = n > 65536 ? omp_get_max_threads() : 1;
+  uint64_t *tmp = malloc((size_t)n * sizeof *tmp);
+  int *count = malloc((size_t)threads * BUCKETS * sizeof *count);
+  if (!tmp || !count) {
+    free(tmp);
+    free(count);
+    return false;
   }
-  for (int k = 0; k < n; k++)
-    order[k] = (int)(uint32_t)pair[k];
-  free(pair);
-  free(tmp);
+  uint64_t *from = *pair, *to = tmp;
+#pragma omp parallel num_threads(threads)
+  {
+    const uint64_t *in = from;
+    uint64_t *out = to;
+    for (int shift = 32; shift < 32 + 3 * MORTON_BITS; shift += MORTON_BITS) {
+      radix_pass(in, out, n, shift, count);
+      const uint64_t *done = out;
+      out = (uint64_t *)in;
+      in = done;
+    }
+  }
+  free(*pair); /* three passes: pair -> tmp -> pair -> tmp */
+  *pair = tmp;
+  free(count);
   return true;
 }
 
@@ -109,37 +134,15 @@ void morton_runs(const uint32_t *sorted, int first, int count, int max, MortonRu
   morton_runs(sorted, mid, first + count - mid, max, c);
 }
 
-/* Put the boxes in Morton order (items and ids alike); *codes: the sorted
- * codes (the caller frees them). */
-bool morton_sort(SahBuild *b, int n, uint32_t **codes)
+bool morton_sort(const Box *items, int n, int *ids, uint32_t *codes)
 {
-  uint32_t *code = malloc((size_t)n * sizeof *code);
-  int *order = malloc((size_t)n * sizeof *order), *ids = malloc((size_t)n * sizeof *ids);
-  Box *items = malloc((size_t)n * sizeof *items);
-  bool ok = code && order && ids && items;
-  if (ok) {
-    morton_codes(b->items, n, code);
-    ok = morton_order(code, n, order);
-  }
+  uint64_t *pair = malloc((size_t)n * sizeof *pair);
+  bool ok = pair && (morton_codes(items, n, pair), sort_pairs(&pair, n));
 #pragma omp parallel for schedule(static) if (ok && n > 65536)
   for (int k = 0; k < (ok ? n : 0); k++) {
-    items[k] = b->items[order[k]];
-    ids[k] = b->ids[order[k]];
-    order[k] = (int)code[order[k]]; /* the codes in the new order */
+    ids[k] = (int)(uint32_t)pair[k];
+    codes[k] = (uint32_t)(pair[k] >> 32);
   }
-  if (ok) {
-    memcpy(code, order, (size_t)n * sizeof *code);
-    free(b->items);
-    free(b->ids);
-    b->items = items;
-    b->ids = ids;
-    *codes = code;
-  } else {
-    free(items);
-    free(ids);
-    free(code);
-  }
-  free(order);
+  free(pair);
   return ok;
 }
-

@@ -9,17 +9,12 @@
 
 #include "accel/bvh_sah.h"
 
-/* Codes of the n boxes' centres, on a cubic grid over their bounds (a flat
- * scene is not cut along its thin axis). */
-void morton_codes(const Box *items, int n, uint32_t *code);
-
-/* order[0 .. n) sorted by code, ties in index order. False when out of
+/* ids[0 .. n): the boxes' indices sorted by the Morton code of their
+ * centres (on a cubic grid over the centres' bounds, so that a flat scene is
+ * not cut along its thin axis), ties in index order; codes[0 .. n): the
+ * sorted codes. The same for any number of threads. False when out of
  * memory. */
-bool morton_order(const uint32_t *code, int n, int *order);
-
-/* b's boxes (and ids) in Morton order; *codes the sorted codes, a new array
- * the caller frees. False when out of memory (b unchanged). */
-bool morton_sort(SahBuild *b, int n, uint32_t **codes);
+bool morton_sort(const Box *items, int n, int *ids, uint32_t *codes);
 
 /* Runs of the sorted codes, each of at most `max` boxes. */
 typedef struct MortonRuns {
