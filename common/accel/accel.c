@@ -198,12 +198,6 @@ static Box sphere_box(const Sphere *s)
   return b;
 }
 
-static int compare_int(const void *a, const void *b)
-{
-  int x = *(const int *)a, y = *(const int *)b;
-  return (x > y) - (x < y);
-}
-
 /* The hierarchy over the spheres ids[0 .. n): one leaf of all of them when
  * `flat`, else binned SAH with leaves of at most LEAF_MAX. Leaves list their
  * spheres in instance order. */
@@ -223,11 +217,6 @@ static bool build_tree(Accel *acc, const Scene *scene, const int *ids, int n, bo
 #pragma omp parallel for schedule(static) if (n > 65536)
   for (int k = 0; k < n; k++)
     acc->spheres[k] = ids[acc->spheres[k]];
-  if (bvh.n_nodes < 2 * n - 1) /* else every leaf holds one sphere */
-    for (int k = 0; k < bvh.n_nodes; k++)
-      if (bvh.nodes[k].meta > 1)
-        qsort(acc->spheres + bvh.nodes[k].index, (size_t)bvh.nodes[k].meta, sizeof(int),
-              compare_int);
   acc->nodes = bvh.nodes;
   return true;
 }
