@@ -2,6 +2,7 @@
  * against the one-piece parse: the same scene, or the same message, for
  * every scene file of the repository. docs/reliability.md, "Large scenes". */
 #define _DEFAULT_SOURCE /* mkstemp */
+#include "capture.h"
 #include "check.h"
 
 #include <dirent.h>
@@ -53,15 +54,12 @@ static bool same_scene(const Scene *a, const Scene *b)
 static bool parse_in_pieces(const char *text, size_t len, int chunks, Scene *s, char *err,
                             size_t size)
 {
-  fflush(stderr);
   FILE *tmp = tmpfile();
-  int saved = dup(2);
-  dup2(fileno(tmp), 2);
+  cr_assert(tmp);
+  capture_begin(tmp);
   scene_init(s);
   bool ok = parser_load_chunks("t.scene", text, len, s, chunks);
-  fflush(stderr);
-  dup2(saved, 2);
-  close(saved);
+  capture_end();
   rewind(tmp);
   err[fread(err, 1, size - 1, tmp)] = '\0';
   fclose(tmp);

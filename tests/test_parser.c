@@ -2,6 +2,7 @@
  * expected Scene, the limits accepted at their edges, and every documented
  * error with its exact FILE:LINE:COL message (columns counted by hand, from
  * 1). docs/scene-format.md. */
+#include "capture.h"
 #include "check.h"
 
 #include <stdlib.h>
@@ -153,17 +154,13 @@ Test(parser, limits_themselves_are_accepted)
  * (caller frees). */
 static char *parse_error(const char *text, size_t len)
 {
-  fflush(stderr);
   FILE *tmp = tmpfile();
   cr_assert(tmp);
-  int saved = dup(2);
-  dup2(fileno(tmp), 2);
+  capture_begin(tmp);
   Scene s;
   scene_init(&s);
   bool ok = parser_load_text("t.scene", text, len, &s);
-  fflush(stderr);
-  dup2(saved, 2);
-  close(saved);
+  capture_end();
   if (ok)
     scene_free(&s);
   long n = ftell(tmp);
@@ -421,16 +418,13 @@ Test(parser, bytes_that_are_not_text)
 /* The messages of the file reader, run with stderr captured. */
 static void expect_file_error(const char *path, const char *message)
 {
-  fflush(stderr);
   FILE *tmp = tmpfile();
-  int saved = dup(2);
-  dup2(fileno(tmp), 2);
+  cr_assert(tmp);
+  capture_begin(tmp);
   Scene s;
   scene_init(&s);
   bool ok = parser_load_file(path, &s);
-  fflush(stderr);
-  dup2(saved, 2);
-  close(saved);
+  capture_end();
   char buf[512] = "";
   rewind(tmp);
   size_t n = fread(buf, 1, sizeof buf - 1, tmp);
