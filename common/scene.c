@@ -6,6 +6,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "grow.h"
+
 void scene_init(Scene *scene)
 {
   memset(scene, 0, sizeof *scene);
@@ -27,20 +29,22 @@ void scene_free(Scene *scene)
   scene_init(scene);
 }
 
+/* Room for `more` elements after *count in a growing array (common/grow.h). */
+static bool reserve(void **array, int count, int more, size_t size)
+{
+  if (grow_reserve(array, (size_t)count, (size_t)more, size))
+    return true;
+  fprintf(stderr, "scene: out of memory\n");
+  return false;
+}
+
 /* Append one element of `size` bytes to a growing array. */
 static bool push(void **array, int *count, size_t size, const void *elem)
 {
-  int n = *count;
-  if ((n & (n - 1)) == 0) { /* n is 0 or a power of two: grow */
-    void *bigger = realloc(*array, size * (size_t)(n ? 2 * n : 4));
-    if (!bigger) {
-      fprintf(stderr, "scene: out of memory\n");
-      return false;
-    }
-    *array = bigger;
-  }
-  memcpy((char *)*array + size * (size_t)n, elem, size);
-  *count = n + 1;
+  if (!reserve(array, *count, 1, size))
+    return false;
+  memcpy((char *)*array + size * (size_t)*count, elem, size);
+  ++*count;
   return true;
 }
 
@@ -65,22 +69,9 @@ bool scene_add_instance(Scene *scene, const Instance *inst)
 
 bool scene_add_instances(Scene *scene, const Instance *insts, int n, int material_offset)
 {
-  /* push's capacity is at least the power of two at or above the count:
-   * reserve that for the new count, as the pushes would. */
-  size_t count = (size_t)scene->n_instances, cap = 4, now = 1;
-  while (cap < count + (size_t)n)
-    cap *= 2;
-  while (now < count)
-    now *= 2;
-  if (!scene->instances || cap > now) {
-    Instance *bigger = realloc(scene->instances, cap * sizeof *bigger);
-    if (!bigger) {
-      fprintf(stderr, "scene: out of memory\n");
-      return false;
-    }
-    scene->instances = bigger;
-  }
-  Instance *to = scene->instances + count;
+  if (!reserve((void **)&scene->instances, scene->n_instances, n, sizeof *insts))
+    return false;
+  Instance *to = scene->instances + scene->n_instances;
   bool lit = false;
 #pragma omp parallel for schedule(static) if (n > 65536) reduction(|| : lit)
   for (int k = 0; k < n; k++) {
@@ -154,7 +145,9 @@ static bool add_light_shapes(Scene *scene, unsigned features)
  * the shapes when the ambient light is off, none after the first). */
 static void analyze(Scene *scene)
 {
-  for (int k = 0; k < scene->n_shapes && !vec_is_zero(scene->ambient); k++) {
+  if (vec_is_zero(scene->ambient))
+    return;
+  for (int k = 0; k < scene->n_shapes; k++) {
     const Material *m = &scene->materials[scene->instances[k].material];
     if (!vec_is_zero(glms_vec3_mul(m->ambient, scene->ambient))) {
       scene->info.ambient = true;

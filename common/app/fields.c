@@ -53,11 +53,12 @@ static bool values_slow(Lexer *lx, const Key *key, vec3s *v)
   append(what, sizeof what, "'");
   if (key->kind == KEY_NUM)
     return lexer_number(lx, what, false, &v->x);
+  if (nonneg)
+    return lexer_colour(lx, what, key->kind == KEY_POWER ? LEXER_MAX_POWER : LEXER_MAX_COLOR,
+                        v);
   for (int k = 0; k < 3; k++) {
     int col = lx->pos < lx->n ? lx->tok[lx->pos].col : lx->end_col;
-    if (!lexer_number(lx, what, nonneg, &v->raw[k]))
-      return false;
-    if (nonneg && !lexer_at_most(lx, col, what, v->raw[k], key->kind == KEY_POWER))
+    if (!lexer_number(lx, what, false, &v->raw[k]))
       return false;
     if (key->kind == KEY_POINT && !(fabsf(v->raw[k]) <= LEXER_MAX_COORD))
       return lexer_fail(lx, col, "expected a coordinate from -1e18 to 1e18 after '%s' "

@@ -269,15 +269,22 @@ bool lexer_number(Lexer *lx, const char *what, bool nonneg, float *out)
   return true;
 }
 
-bool lexer_at_most(Lexer *lx, int col, const char *what, float v, bool power)
+bool lexer_colour(Lexer *lx, const char *what, float max, vec3s *out)
 {
-  if (v <= (power ? LEXER_MAX_POWER : LEXER_MAX_COLOR))
-    return true;
-  const Token *t = &lx->tok[lx->pos - 1];
-  return lexer_fail(lx, col, "expected %s, found '%.*s', above %s, the most %s may be (a "
-                    "colour times a light must fit in a float)", what, t->len, t->s,
-                    power ? "1e18" : "1e9",
-                    power ? "a light's power" : "a colour or an irradiance");
+  for (int k = 0; k < 3; k++) {
+    int col = next_col(lx);
+    if (!lexer_number(lx, what, true, &out->raw[k]))
+      return false;
+    if (out->raw[k] > max) {
+      const Token *t = &lx->tok[lx->pos - 1];
+      bool power = max == LEXER_MAX_POWER;
+      return lexer_fail(lx, col, "expected %s, found '%.*s', above %s, the most %s may be "
+                        "(a colour times a light must fit in a float)", what, t->len, t->s,
+                        power ? "1e18" : "1e9",
+                        power ? "a light's power" : "a colour or an irradiance");
+    }
+  }
+  return true;
 }
 
 /* A whole number in [lo, hi]. */

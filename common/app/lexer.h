@@ -69,10 +69,10 @@ bool lexer_fail_unknown(const Lexer *lx, const char *what,
 /* Readers of the next word(s). `what` names the value in messages. */
 bool lexer_number(Lexer *lx, const char *what, bool nonneg, float *out);
 
-/* The colour (or, when `power`, the light's power) just read, v at column
- * col, is at most LEXER_MAX_COLOR (LEXER_MAX_POWER); false (printed) when
- * above. `what` names what was expected, as for lexer_number. */
-bool lexer_at_most(Lexer *lx, int col, const char *what, float v, bool power);
+/* Three numbers >= 0, each at most `max`: LEXER_MAX_COLOR (a colour),
+ * LEXER_MAX_POWER (a light's power) or INFINITY (any finite value); false
+ * (printed) at the first that is not. */
+bool lexer_colour(Lexer *lx, const char *what, float max, vec3s *out);
 bool lexer_int(Lexer *lx, const char *what, int lo, int hi, int *out);
 /* A name (letter or '_', then letters, digits, '_'), as a token of the text. */
 bool lexer_name(Lexer *lx, const char *what, int max_len, Token *out);

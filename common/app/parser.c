@@ -5,11 +5,13 @@
 #include "app/parser.h"
 #include "app/parser_state.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "film.h"
+#include "grow.h"
 #include "app/bounds.h"
 #include "app/light_statement.h"
 
@@ -54,15 +56,9 @@ static bool st_colour(Parser *p, int which, const char *word, vec3s *out)
 {
   char what[64];
   snprintf(what, sizeof what, "3 numbers >= 0 after '%s'", word);
-  if (!once(p, which, word))
-    return false;
-  for (int k = 0; k < 3; k++) {
-    int col = p->lx.pos < p->lx.n ? p->lx.tok[p->lx.pos].col : p->lx.end_col;
-    if (!lexer_number(&p->lx, what, true, &out->raw[k]) ||
-        (which == ONCE_AMBIENT && !lexer_at_most(&p->lx, col, what, out->raw[k], false)))
-      return false;
-  }
-  return lexer_expect_end(&p->lx);
+  return once(p, which, word) &&
+         lexer_colour(&p->lx, what, which == ONCE_AMBIENT ? LEXER_MAX_COLOR : INFINITY, out) &&
+         lexer_expect_end(&p->lx);
 }
 
 static bool st_count(Parser *p, int which, const char *word, int *out)
@@ -142,23 +138,14 @@ static NameRecords forward_records(const Parser *p)
   return (NameRecords){p->forward ? p->forward[0].name : "", sizeof(ForwardName)};
 }
 
-/* Room for n more pending references (the array doubles as it fills); false
- * when out of memory. */
+/* Room for n more pending references (common/grow.h); false when out of
+ * memory. */
 static bool pending_reserve(Parser *p, int n)
 {
-  size_t need = (size_t)p->n_pending + (size_t)n, cap = p->pending_cap ? p->pending_cap : 4;
-  if (need <= p->pending_cap)
+  if (grow_reserve((void **)&p->pending, (size_t)p->n_pending, (size_t)n, sizeof *p->pending))
     return true;
-  while (cap < need)
-    cap *= 2;
-  Pending *bigger = realloc(p->pending, cap * sizeof *bigger);
-  if (!bigger) {
-    fprintf(stderr, "parser: out of memory\n");
-    return false;
-  }
-  p->pending = bigger;
-  p->pending_cap = cap;
-  return true;
+  fprintf(stderr, "parser: out of memory\n");
+  return false;
 }
 
 /* The index in p->forward of `name`, added when new; -1 when out of memory. */
@@ -167,14 +154,9 @@ static int forward_name(Parser *p, const char *name, int len)
   int id = names_find(&p->forward_names, forward_records(p), name, len);
   if (id >= 0)
     return id;
-  if (!p->forward || (p->n_forward & (p->n_forward - 1)) == 0) {
-    ForwardName *bigger = realloc(p->forward, sizeof *bigger *
-                                  (size_t)(p->n_forward ? 2 * p->n_forward : 4));
-    if (!bigger) {
-      fprintf(stderr, "parser: out of memory\n");
-      return -1;
-    }
-    p->forward = bigger;
+  if (!grow_reserve((void **)&p->forward, (size_t)p->n_forward, 1, sizeof *p->forward)) {
+    fprintf(stderr, "parser: out of memory\n");
+    return -1;
   }
   ForwardName *f = &p->forward[p->n_forward];
   memcpy(f->name, name, (size_t)len);
@@ -201,7 +183,7 @@ bool parser_pending_merge(Parser *p, const Parser *q, int first_instance)
     const char *name = q->forward[k].name;
     ok = (map[k] = forward_name(p, name, (int)strlen(name))) >= 0;
   }
-  if (ok && q->n_pending > 0) { /* p->pending may still be NULL when none */
+  if (ok) {
     Pending *to = p->pending + p->n_pending;
     for (int k = 0; k < q->n_pending; k++) {
       to[k] = q->pending[k];
@@ -344,5 +326,4 @@ void parser_end(Parser *p)
   p->pending = NULL;
   p->forward = NULL;
   p->n_pending = p->n_forward = 0;
-  p->pending_cap = 0;
 }

@@ -30,7 +30,6 @@ typedef struct Parser {
   Names names;       /* material name -> index into scene->materials */
   Pending *pending;  /* in file order */
   int n_pending;
-  size_t pending_cap; /* entries pending has room for */
   ForwardName *forward; /* the names pending references use */
   int n_forward;
   Names forward_names;  /* name -> index into forward */
