@@ -55,21 +55,21 @@ static bool other_any(const Scene *sc, Ray r, float tmax, Geometry g)
   return false;
 }
 
-static const Instance *textbook_closest(const Scene *sc, Ray r, float *tmax)
+static const Instance *textbook_closest(const Scene *sc, const Ray *r, float *tmax)
 {
-  return other_closest(sc, r, tmax, TEXTBOOK);
+  return other_closest(sc, *r, tmax, TEXTBOOK);
 }
-static bool textbook_any(const Scene *sc, Ray r, float tmax)
+static bool textbook_any(const Scene *sc, const Ray *r, float tmax)
 {
-  return other_any(sc, r, tmax, TEXTBOOK);
+  return other_any(sc, *r, tmax, TEXTBOOK);
 }
-static const Instance *float_bc_closest(const Scene *sc, Ray r, float *tmax)
+static const Instance *float_bc_closest(const Scene *sc, const Ray *r, float *tmax)
 {
-  return other_closest(sc, r, tmax, FLOAT_BC);
+  return other_closest(sc, *r, tmax, FLOAT_BC);
 }
-static bool float_bc_any(const Scene *sc, Ray r, float tmax)
+static bool float_bc_any(const Scene *sc, const Ray *r, float tmax)
 {
-  return other_any(sc, r, tmax, FLOAT_BC);
+  return other_any(sc, *r, tmax, FLOAT_BC);
 }
 static void keep(SceneIndex *index)
 {

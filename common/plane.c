@@ -33,7 +33,7 @@ void plane_hit_fill(const Plane *pl, Ray r, float t, Hit *hit)
   /* BEGIN SOLUTION step 02 */
   vec3s p = ray_at(r, t);
   if (pl->axis >= 0) {
-    p.raw[pl->axis] = pl->point.raw[pl->axis];
+    p = vec_with(p, pl->axis, pl->point.raw[pl->axis]);
     hit->p_err = 0.0f;
   } else {
     float off = glms_vec3_dot(glms_vec3_sub(p, pl->point), pl->normal);

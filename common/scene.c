@@ -210,7 +210,7 @@ bool scene_intersect(const Scene *scene, Ray r, float tmax, Hit *hit)
 {
   const Instance *best = NULL;
   if (scene->index) {
-    best = scene->index->closest(scene, r, &tmax);
+    best = scene->index->closest(scene, &r, &tmax);
   } else {
     for (int k = 0; k < scene->n_instances; k++) {
       float t = scene_instance_hit_t(&scene->instances[k], r, tmax);
@@ -231,7 +231,7 @@ bool scene_occluded(const Scene *scene, Ray r, float tmax)
   if (scene->no_occluders)
     return false;
   if (scene->index)
-    return scene->index->any(scene, r, tmax);
+    return scene->index->any(scene, &r, tmax);
   for (int k = 0; k < scene->n_shapes; k++)
     if (scene_instance_hit_t(&scene->instances[k], r, tmax) < tmax)
       return true;

@@ -54,10 +54,12 @@ struct Scene;
  * order, as the loop does. */
 typedef struct SceneIndex {
   /* Closest instance with t in (0, *tmax), *tmax becoming its distance; NULL
-   * when none. */
-  const struct Instance *(*closest)(const struct Scene *scene, Ray r, float *tmax);
+   * when none. The ray by address: a Ray passed by value goes through the
+   * stack, and the caller then rebuilt it there piecewise and read it back
+   * whole, a stalled load per camera ray (docs/performance.md). */
+  const struct Instance *(*closest)(const struct Scene *scene, const Ray *r, float *tmax);
   /* True when some lit shape lies on the ray with t in (0, tmax). */
-  bool (*any)(const struct Scene *scene, Ray r, float tmax);
+  bool (*any)(const struct Scene *scene, const Ray *r, float tmax);
   void (*destroy)(struct SceneIndex *index); /* frees the index */
 } SceneIndex;
 

@@ -20,6 +20,15 @@ static inline vec3s vec_reflect(vec3s in, vec3s n)
   return glms_vec3_sub(in, glms_vec3_scale(n, 2.0f * glms_vec3_dot(in, n)));
 }
 
+/* v with component `axis` (0, 1, 2: x, y, z) replaced by `value`. Written
+ * as three selects: assigning v.raw[axis] would send v through memory, and
+ * reading it back whole then waits on the store (about 5 % of step 05's
+ * frame, docs/performance.md). */
+static inline vec3s vec_with(vec3s v, int axis, float value)
+{
+  return vec_make(axis == 0 ? value : v.x, axis == 1 ? value : v.y, axis == 2 ? value : v.z);
+}
+
 /* Largest absolute component, |v|_inf. */
 static inline float vec_max_abs(vec3s v)
 {

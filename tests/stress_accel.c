@@ -68,13 +68,13 @@ static void check_layout(const char *layout, int n, int rays)
         want = m;
       }
     }
-    const Instance *hit = s.index->closest(&s, r, &got);
+    const Instance *hit = s.index->closest(&s, &r, &got);
     CHECK_INT(&c, want, hit ? (int)(hit - s.instances) : -1, "%s layout, %d spheres, ray %d: "
               "the closest instance (-1: none), as the loop over scene_instance_hit_t says",
               layout, n, k);
     if (want >= 0)
       CHECK_NEAR(&c, best, got, 0.0, "%s layout, %d spheres, ray %d: the closest t", layout, n, k);
-    CHECK_INT(&c, want >= 0, s.index->any(&s, r, tmax), "%s layout, %d spheres, ray %d: any "
+    CHECK_INT(&c, want >= 0, s.index->any(&s, &r, tmax), "%s layout, %d spheres, ray %d: any "
               "hit before tmax", layout, n, k);
   }
   CHECK_DONE(&c);

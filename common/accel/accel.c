@@ -13,6 +13,7 @@
 #include <string.h>
 
 #include "accel/bvh.h"
+#include "accel/cones.h"
 #include "accel/hull.h"
 
 enum {
@@ -27,6 +28,8 @@ typedef struct Accel {
   int *spheres;     /* instance indices of the lit spheres, in leaf order */
   int *others;      /* instance indices of everything else, lit ones first */
   int n_others, n_others_lit;
+  Cones *cones;     /* small scenes: the spheres' cones seen from the eye and
+                     * the lights (accel/cones.c), or NULL */
 } Accel;
 
 /* The closest hit so far: distance and instance index (INT_MAX: none). */
@@ -50,10 +53,10 @@ static float next_up(float x)
  * instance order (the plain loop keeps the first of equal distances). Once
  * something is found, the test's limit is just above its distance, so that an
  * equal distance comes back and is compared by index. */
-static void consider(const Scene *scene, int id, Ray r, Best *best)
+static void consider(const Scene *scene, int id, const Ray *r, Best *best)
 {
   float limit = best->inst == INT_MAX ? best->t : next_up(best->t);
-  float t = scene_instance_hit_t(&scene->instances[id], r, limit);
+  float t = scene_instance_hit_t(&scene->instances[id], *r, limit);
   if (t < best->t || (t == best->t && best->inst != INT_MAX && id < best->inst)) {
     best->t = t;
     best->inst = id;
@@ -92,18 +95,18 @@ static vec3s inverse_dir(vec3s d)
 
 /* Nearer child first; a box entered beyond the best distance is skipped (<=:
  * an equal distance may still win on instance index). */
-static void bvh_closest(const Scene *scene, const Accel *acc, Ray r, Best *best)
+static void bvh_closest(const Scene *scene, const Accel *acc, const Ray *r, Best *best)
 {
-  vec3s inv_d = inverse_dir(r.d);
+  vec3s o = r->o, inv_d = inverse_dir(r->d);
   int stack[STACK], top = 0, node = 0;
   for (;;) {
     const BvhNode *nd = &acc->nodes[node];
-    if (box_enter(nd, r.o, inv_d, best->t) <= best->t) {
+    if (box_enter(nd, o, inv_d, best->t) <= best->t) {
       if (nd->meta > 0) {
         for (int k = nd->index; k < nd->index + nd->meta; k++)
           consider(scene, acc->spheres[k], r, best);
       } else {
-        bool neg = r.d.raw[-1 - nd->meta] < 0.0f;
+        bool neg = r->d.raw[-1 - nd->meta] < 0.0f;
         stack[top++] = nd->index + !neg;
         node = nd->index + neg;
         continue;
@@ -115,16 +118,16 @@ static void bvh_closest(const Scene *scene, const Accel *acc, Ray r, Best *best)
   }
 }
 
-static bool bvh_any(const Scene *scene, const Accel *acc, Ray r, float tmax)
+static bool bvh_any(const Scene *scene, const Accel *acc, const Ray *r, float tmax)
 {
-  vec3s inv_d = inverse_dir(r.d);
+  vec3s o = r->o, inv_d = inverse_dir(r->d);
   int stack[STACK], top = 0, node = 0;
   for (;;) {
     const BvhNode *nd = &acc->nodes[node];
-    if (box_enter(nd, r.o, inv_d, tmax) < tmax) {
+    if (box_enter(nd, o, inv_d, tmax) < tmax) {
       if (nd->meta > 0) {
         for (int k = nd->index; k < nd->index + nd->meta; k++)
-          if (scene_instance_hit_t(&scene->instances[acc->spheres[k]], r, tmax) < tmax)
+          if (scene_instance_hit_t(&scene->instances[acc->spheres[k]], *r, tmax) < tmax)
             return true;
       } else {
         stack[top++] = nd->index + 1;
@@ -138,27 +141,60 @@ static bool bvh_any(const Scene *scene, const Accel *acc, Ray r, float tmax)
   }
 }
 
-/* The planes first: the floor a ray meets bounds the boxes worth entering. */
-static const Instance *accel_closest(const Scene *scene, Ray r, float *tmax)
+/* True when r cannot meet instance inst at any t > 0 because inst is an
+ * axis-aligned plane that r starts on, or leaves from the side r moves
+ * toward: the plane's own test would reject it (the difference of two floats
+ * has the sign of the exact one, so the decision is exact), and skipping it
+ * saves a division. Rays toward a light above the floor, and camera rays
+ * into the sky, are such rays. */
+static bool leaves_plane(const Instance *inst, const Ray *r)
+{
+  if (inst->shape != SHAPE_PLANE || inst->plane.axis < 0)
+    return false;
+  int a = inst->plane.axis;
+  float h = r->o.raw[a] - inst->plane.point.raw[a], d = r->d.raw[a];
+  return d != 0.0f && (h == 0.0f || (h > 0.0f && d > 0.0f) || (h < 0.0f && d < 0.0f));
+}
+
+/* The planes first: the floor a ray meets bounds the boxes worth entering.
+ * The ray stays in the caller's memory, each test's copy taken from there:
+ * held in registers instead, it was rebuilt on the stack piecewise before
+ * every test and read back whole, a stalled load per test (docs/performance.md). */
+static const Instance *accel_closest(const Scene *scene, const Ray *r, float *tmax)
 {
   const Accel *acc = (const Accel *)scene->index;
   Best best = {*tmax, INT_MAX};
   for (int k = 0; k < acc->n_others; k++)
-    consider(scene, acc->others[k], r, &best);
-  if (acc->nodes)
+    if (!leaves_plane(&scene->instances[acc->others[k]], r))
+      consider(scene, acc->others[k], r, &best);
+  uint32_t mask;
+  if (acc->cones && cones_from_eye(acc->cones, r, &mask)) {
+    for (const int *ids = cones_spheres(acc->cones); mask; mask &= mask - 1)
+      consider(scene, ids[__builtin_ctz(mask)], r, &best);
+  } else if (acc->nodes) {
     bvh_closest(scene, acc, r, &best);
+  }
   if (best.inst == INT_MAX)
     return NULL;
   *tmax = best.t;
   return &scene->instances[best.inst];
 }
 
-static bool accel_any(const Scene *scene, Ray r, float tmax)
+static bool accel_any(const Scene *scene, const Ray *r, float tmax)
 {
   const Accel *acc = (const Accel *)scene->index;
-  for (int k = 0; k < acc->n_others_lit; k++)
-    if (scene_instance_hit_t(&scene->instances[acc->others[k]], r, tmax) < tmax)
+  for (int k = 0; k < acc->n_others_lit; k++) {
+    const Instance *inst = &scene->instances[acc->others[k]];
+    if (!leaves_plane(inst, r) && scene_instance_hit_t(inst, *r, tmax) < tmax)
       return true;
+  }
+  uint32_t mask;
+  if (acc->cones && cones_toward_light(acc->cones, r, tmax, &mask)) {
+    for (const int *ids = cones_spheres(acc->cones); mask; mask &= mask - 1)
+      if (scene_instance_hit_t(&scene->instances[ids[__builtin_ctz(mask)]], *r, tmax) < tmax)
+        return true;
+    return false;
+  }
   return acc->nodes && bvh_any(scene, acc, r, tmax);
 }
 
@@ -168,6 +204,7 @@ static void accel_destroy(SceneIndex *index)
   free(acc->nodes);
   free(acc->spheres);
   free(acc->others);
+  cones_free(acc->cones);
   free(acc);
 }
 
@@ -246,6 +283,8 @@ bool accel_build(Scene *scene)
   }
   if (ok && n > 0)
     ok = build_tree(acc, scene, ids, n, layout == 1 || (layout < 0 && n <= ACCEL_FLAT_MAX));
+  if (ok && layout < 0 && n > 0 && n <= ACCEL_FLAT_MAX && n <= CONES_MAX)
+    acc->cones = cones_build(scene, ids, n); /* NULL: the rays go to the tree */
   free(ids);
   if (!ok) {
     fprintf(stderr, "accel: out of memory for %d instances\n", scene->n_instances);

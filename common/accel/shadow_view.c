@@ -4,24 +4,24 @@
  * shape's own function; the view only chooses which. */
 #include "accel/accel.h"
 
-static bool view_any(const Scene *scene, Ray r, float tmax)
+static bool view_any(const Scene *scene, const Ray *r, float tmax)
 {
   const AccelShadowView *v = (const AccelShadowView *)scene->index;
   for (int k = 0; k < v->n; k++)
-    if (scene_instance_hit_t(&scene->instances[v->ids[k]], r, tmax) < tmax)
+    if (scene_instance_hit_t(&scene->instances[v->ids[k]], *r, tmax) < tmax)
       return true;
   return false;
 }
 
 /* The closest hit is the whole scene's: through its own index, or its loop. */
-static const Instance *view_closest(const Scene *scene, Ray r, float *tmax)
+static const Instance *view_closest(const Scene *scene, const Ray *r, float *tmax)
 {
   const AccelShadowView *v = (const AccelShadowView *)scene->index;
   if (v->scene->index)
     return v->scene->index->closest(v->scene, r, tmax);
   const Instance *best = NULL;
   for (int k = 0; k < scene->n_instances; k++) {
-    float t = scene_instance_hit_t(&scene->instances[k], r, *tmax);
+    float t = scene_instance_hit_t(&scene->instances[k], *r, *tmax);
     if (t < *tmax) {
       *tmax = t;
       best = &scene->instances[k];

@@ -100,15 +100,16 @@ static void camera_query(Trace *t, Ray r, const Instance *hit, float t_hit)
 /* A closest-hit query is a camera ray when it starts the pixel or a new
  * camera sample, or starts at the eye; otherwise it is a shadow test (the
  * lecture's closest-hit version). */
-static const Instance *traced_closest(const Scene *scene, Ray r, float *tmax)
+static const Instance *traced_closest(const Scene *scene, const Ray *ray, float *tmax)
 {
+  Ray r = *ray;
   Trace *t = ((const TraceIndex *)scene->index)->trace;
   const Scene *in = &t->plain;
   trace_drain(t);
   if (t->mode == TRACE_CAPTURE)
-    return in->index ? in->index->closest(in, r, tmax) : nearest(in, in->n_instances, r, tmax);
+    return in->index ? in->index->closest(in, ray, tmax) : nearest(in, in->n_instances, r, tmax);
   float limit = *tmax;
-  const Instance *hit = in->index ? in->index->closest(in, r, tmax)
+  const Instance *hit = in->index ? in->index->closest(in, ray, tmax)
                                   : nearest(in, in->n_instances, r, tmax);
   vec3s eye = in->camera.eye;
   bool camera = t->camera_next || t->ctx->sample != t->sample ||
@@ -129,13 +130,14 @@ static const Instance *traced_closest(const Scene *scene, Ray r, float *tmax)
   return hit;
 }
 
-static bool traced_any(const Scene *scene, Ray r, float tmax)
+static bool traced_any(const Scene *scene, const Ray *ray, float tmax)
 {
+  Ray r = *ray;
   Trace *t = ((const TraceIndex *)scene->index)->trace;
   const Scene *in = &t->plain;
   trace_drain(t);
   float limit = tmax;
-  bool blocked = in->index ? in->index->any(in, r, tmax)
+  bool blocked = in->index ? in->index->any(in, ray, tmax)
                            : nearest(in, in->n_shapes, r, &limit) != NULL;
   if (t->mode != TRACE_CAPTURE)
     shadow_query(t, r, tmax, blocked);
