@@ -104,3 +104,193 @@ Test(accel, clustered_hierarchy_gives_the_plain_loops_answers)
     check_layout("bvh", 40000, 1500);
   }
 }
+
+/* ------------------------------------------------------------------ cones */
+
+/* The plain loop's answers: the closest instance (first of equal distances)
+ * and whether some lit shape lies on the ray before tmax. */
+static int loop_closest(const Scene *s, Ray r, float *t)
+{
+  int want = -1;
+  for (int m = 0; m < s->n_instances; m++) {
+    float tm = scene_instance_hit_t(&s->instances[m], r, *t);
+    if (tm < *t) {
+      *t = tm;
+      want = m;
+    }
+  }
+  return want;
+}
+
+static bool loop_any(const Scene *s, Ray r, float tmax)
+{
+  for (int m = 0; m < s->n_shapes; m++)
+    if (scene_instance_hit_t(&s->instances[m], r, tmax) < tmax)
+      return true;
+  return false;
+}
+
+static vec3s random_unit(Rng *g)
+{
+  return glms_vec3_normalize(vec_make(uni(g, -1, 1), uni(g, -1, 1), uni(g, -1, 1)));
+}
+
+/* n spheres (1..16: the scenes that get cones), the floor, in odd variants a
+ * tilted plane too; an eye, two point lights and a directional one. Variant
+ * 2 puts the eye inside a sphere, variant 3 a light inside one and the other
+ * on a sphere's surface. */
+static void cone_scene(Scene *s, Rng *g, int n, int variant)
+{
+  scene_init(s);
+  Material m = {.name = "m", .diffuse = vec_make(0.5f, 0.5f, 0.5f)};
+  cr_assert(scene_add_material(s, &m), "out of memory");
+  Instance pl = {.shape = SHAPE_PLANE, .plane = plane_make(vec_make(0, 0, 0), vec_make(0, 1, 0)),
+                 .light = -1};
+  cr_assert(scene_add_instance(s, &pl), "out of memory");
+  if (variant % 2) {
+    pl.plane = plane_make(vec_make(0, -0.5f, 0), vec_make(0.1f, 1, 0.05f));
+    cr_assert(scene_add_instance(s, &pl), "out of memory");
+  }
+  int first = s->n_instances;
+  for (int k = 0; k < n; k++) {
+    Instance in = {.shape = SHAPE_SPHERE, .light = -1};
+    in.sphere.center = vec_make(uni(g, -6, 6), uni(g, 0, 4), uni(g, -6, 6));
+    in.sphere.radius = k % 7 == 3 ? 1e-3f : uni(g, 0.05f, 1.5f);
+    if (k % 5 == 4) /* a copy of the one before: equal distances */
+      in.sphere = s->instances[s->n_instances - 1].sphere;
+    cr_assert(scene_add_instance(s, &in), "out of memory");
+  }
+  const Sphere *inside = &s->instances[first + (int)(rng_float(g) * (float)n)].sphere;
+  s->camera.eye = variant == 2 ? inside->center : vec_make(uni(g, -12, 12), uni(g, 0.5f, 8), 12);
+  s->camera.center = vec_make(uni(g, -1, 1), uni(g, 0, 1), uni(g, -1, 1));
+  for (int k = 0; k < 2; k++) {
+    Light l = {.type = LIGHT_POINT, .power = vec_make(10, 10, 10),
+               .position = vec_make(uni(g, -8, 8), uni(g, 3, 9), uni(g, -8, 8))};
+    if (variant == 3)
+      l.position = k == 0 ? inside->center
+                          : glms_vec3_add(inside->center, vec_make(0, inside->radius, 0));
+    cr_assert(scene_add_light(s, &l), "out of memory");
+  }
+  Light sun = {.type = LIGHT_DIRECTIONAL, .irradiance = vec_make(1, 1, 1),
+               .direction = glms_vec3_normalize(vec_make(uni(g, -1, 1), -1, uni(g, -1, 1)))};
+  cr_assert(scene_add_light(s, &sun), "out of memory");
+  cr_assert(scene_prepare(s, SCENE_CAMERA | SCENE_LIGHTS), "out of memory");
+  cr_assert(accel_build(s), "accel_build (given code) failed");
+}
+
+/* A direction from `from` toward a random point of sphere k's rim as seen
+ * from there (grazing), or a random direction. */
+static vec3s aim(const Scene *s, Rng *g, vec3s from, int n)
+{
+  if (rng_float(g) < 0.5f)
+    return random_unit(g);
+  const Sphere *sp = &s->instances[s->n_instances - n + (int)(rng_float(g) * (float)n)].sphere;
+  vec3s to_c = glms_vec3_sub(sp->center, from), side = random_unit(g);
+  side = glms_vec3_normalize(glms_vec3_sub(side, glms_vec3_scale(to_c, glms_vec3_dot(side, to_c) /
+                                                                          glms_vec3_dot(to_c, to_c))));
+  vec3s rim = glms_vec3_add(sp->center, glms_vec3_scale(side, sp->radius * uni(g, 0.999f, 1.001f)));
+  return glms_vec3_normalize(glms_vec3_sub(rim, from));
+}
+
+/* An origin: around the spheres, on the floor, under it, or `far` times
+ * farther out. */
+static vec3s origin(Rng *g, float far)
+{
+  float pick = rng_float(g);
+  vec3s o = vec_make(uni(g, -10, 10), uni(g, 0, 6), uni(g, -10, 10));
+  if (pick < 0.2f)
+    o.y = 0.0f;
+  else if (pick < 0.3f)
+    o.y = -uni(g, 0, 2);
+  else if (pick < 0.4f)
+    o = glms_vec3_scale(o, far);
+  return o;
+}
+
+static void check_ray(Check *c, const Scene *s, Ray r, float tmax, bool closest, const char *what,
+                      int n, int variant, int k)
+{
+  if (closest) {
+    float t_want = tmax, t_got = tmax;
+    int want = loop_closest(s, r, &t_want);
+    const Instance *hit = s->index->closest(s, &r, &t_got);
+    CHECK_INT(c, want, hit ? (int)(hit - s->instances) : -1, "%d spheres, variant %d, %s %d: "
+              "the closest instance (-1: none), as the loop over scene_instance_hit_t says",
+              n, variant, what, k);
+    if (want >= 0)
+      CHECK_NEAR(c, t_want, t_got, 0.0, "%d spheres, variant %d, %s %d: the closest t", n,
+                 variant, what, k);
+  }
+  CHECK_INT(c, loop_any(s, r, tmax), s->index->any(s, &r, tmax), "%d spheres, variant %d, %s "
+            "%d: any lit shape before tmax", n, variant, what, k);
+}
+
+/* Up to 16 spheres the index chooses each camera ray's and shadow ray's
+ * spheres from their cones seen from the eye and the point lights, and
+ * their discs across the directional lights (common/accel/cones.c): the
+ * plain loop's answers for camera rays, the shadow rays spawned from their
+ * hits, rays whose end strays from a light by 1e-8 to 1e-2 of its distance
+ * (inside and outside the cones' margin), rays along the directional light
+ * from anywhere, grazing rims, and an eye or a light inside a sphere. */
+Test(accel, cones_give_the_plain_loops_answers)
+{
+  Check c = CHECK("scene index (given code: common/accel/cones.c)",
+                  "docs/performance.md, \"Cones from the eye and the lights\"");
+  const int sizes[] = {1, 2, 5, 8, 9, 16};
+  for (int variant = 0; variant < 4; variant++)
+    for (int si = 0; si < 6; si++) {
+      int n = sizes[si];
+      for (int rep = 0; rep < 4; rep++) {
+        Rng g = rng_make(11, (uint32_t)(variant * 100 + n * 10 + rep), 0);
+        Scene s;
+        cone_scene(&s, &g, n, variant);
+        for (int k = 0; k < 2000; k++) {
+          Ray cam = {.o = s.camera.eye, .d = aim(&s, &g, s.camera.eye, n)};
+          check_ray(&c, &s, cam, INFINITY, true, "camera ray", n, variant, k);
+          Hit hit;
+          if (scene_intersect(&s, cam, INFINITY, &hit)) {
+            for (int li = 0; li < s.n_lights; li++) {
+              vec3s l;
+              float dist;
+              light_incident(&s.lights[li], hit.p, hit.p_err, &l, &dist);
+              if (dist > 0.0f)
+                check_ray(&c, &s, ray_spawn(&hit, l), ray_shadow_tmax(dist), false,
+                          "shadow ray from a camera ray's hit", n, variant, k);
+            }
+          }
+          /* Ends that stray up to 1e-2 of the distance from the light: some
+           * beyond the cones' margin, left to the hierarchy. Origins farther
+           * out only with ends the cones take (a stray of at most 1e-6): the
+           * hierarchy's boxes are padded for sphere_hit_t's rounding near the
+           * scene, not for its 2^-23 of the distance from a far origin, and
+           * may then differ from the loop on a grazing ray (docs/performance.md,
+           * "Cones from the eye and the lights"). */
+          const Light *pt = &s.lights[k % 2];
+          float rel = powf(10.0f, -uni(&g, 2, 8));
+          vec3s o = origin(&g, rel <= 1e-6f ? 10.0f : 1.0f);
+          float stray = rel * glms_vec3_distance(o, pt->position);
+          vec3s end = glms_vec3_add(pt->position, glms_vec3_scale(random_unit(&g), stray));
+          if (rng_float(&g) < 0.5f) /* through a sphere's rim on its way to the light */
+            o = glms_vec3_add(end, glms_vec3_scale(aim(&s, &g, end, n), -uni(&g, 1, 30)));
+          vec3s to_end = glms_vec3_sub(end, o);
+          Ray r = {.o = o, .d = glms_vec3_normalize(to_end)};
+          check_ray(&c, &s, r, glms_vec3_norm(to_end), false, "ray ending near a point light", n,
+                    variant, k);
+          Ray along = {.o = origin(&g, k % 2 ? 10.0f : 1e6f), .d = glms_vec3_negate(s.lights[2].direction)};
+          if (k % 3 == 1) { /* past a sphere's rim, within 1e-3 of its radius */
+            const Sphere *sp = &s.instances[s.n_instances - n + k % n].sphere;
+            vec3s side = random_unit(&g);
+            side = glms_vec3_normalize(
+                glms_vec3_sub(side, glms_vec3_scale(along.d, glms_vec3_dot(side, along.d))));
+            vec3s rim = glms_vec3_add(sp->center,
+                                      glms_vec3_scale(side, sp->radius * uni(&g, 0.999f, 1.001f)));
+            along.o = glms_vec3_sub(rim, glms_vec3_scale(along.d, uni(&g, 0.5f, 50)));
+          }
+          check_ray(&c, &s, along, k % 3 ? INFINITY : uni(&g, 0.1f, 20), false,
+                    "ray along the directional light", n, variant, k);
+        }
+        scene_free(&s);
+      }
+    }
+  CHECK_DONE(&c);
+}
