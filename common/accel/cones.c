@@ -2,8 +2,9 @@
  * the lights (docs/performance.md, "Cones from the eye and the lights").
  *
  * Seen from a point P (the eye, a point light), a ball of centre c and
- * radius R fills the cone of directions w with |w x a| <= s |w| and
- * w . a >= 0, where a is the unit vector toward c and s = R / |c - P|.
+ * radius R fills the cone of directions w with w . a >= 0 and
+ * (w . a)^2 >= (1 - s^2) |w|^2, where a is the unit vector toward c and
+ * s = R / |c - P| the sine of the cone's half-angle.
  * - A ray leaving P in direction d can meet the ball only when d lies in
  *   that cone (its points are P + t d).
  * - A shadow ray from o whose end o + tmax d lies within rho of P can meet it
@@ -16,24 +17,32 @@
  *
  * R is the radius padded as for the hierarchy's boxes (accel.c, sphere_box),
  * so a grazing ray that sphere_hit_t accepts is never left out; s is widened
- * by 2^-12 and the discs by 2^-18 of the scene's size, far above the
- * rounding of the float comparisons. A ball holding P (or nearly) is always
- * a candidate. The comparisons run on all spheres at once (8 lanes of a GCC
- * vector); they only choose which spheres are tested. */
+ * by 2^-9 and the discs by 2^-18 of the scene's size, far above the rounding
+ * of the float comparisons (about 2^-20). A ball holding P (or nearly) is a
+ * candidate for every ray. The comparisons run on all spheres at once (the
+ * lanes of a GCC vector); they only choose which spheres are tested. */
 #include "accel/cones.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
+/* Lanes per comparison: 8 (256-bit vectors) where the build targets AVX,
+ * else 4 (128 bits, which every x86-64 has: wider vectors passed without
+ * AVX change the calling convention). */
+#ifdef __AVX__
+enum { LANES = 8 };
+#else
+enum { LANES = 4 };
+#endif
+
 enum {
-  LANES = 8,
   BLOCKS = CONES_MAX / LANES,
   MAX_LIGHTS = 8 /* cones for the first 8 point and 8 directional lights */
 };
 
-typedef float V8 __attribute__((vector_size(LANES * sizeof(float))));
-typedef int I8 __attribute__((vector_size(LANES * sizeof(int))));
+typedef float VF __attribute__((vector_size(LANES * sizeof(float))));
+typedef int VI __attribute__((vector_size(LANES * sizeof(int))));
 
 /* The cones seen from a point: unit axes a, squared cosines c2 of the
  * widened half-angles (2 in the lanes past the spheres: never met), and the
@@ -41,7 +50,7 @@ typedef int I8 __attribute__((vector_size(LANES * sizeof(int))));
 typedef struct PointCones {
   vec3s p;
   float rho; /* shadow rays ending within rho of p are known */
-  V8 ax[BLOCKS], ay[BLOCKS], az[BLOCKS], c2[BLOCKS];
+  VF ax[BLOCKS], ay[BLOCKS], az[BLOCKS], c2[BLOCKS];
   uint32_t always;
 } PointCones;
 
@@ -50,7 +59,7 @@ typedef struct Discs {
   vec3s d;              /* the rays' direction, bit for bit */
   vec3s e1, e2;         /* across d */
   float o_max;          /* origins farther out (max norm) are not looked up */
-  V8 u[BLOCKS], v[BLOCKS], r2[BLOCKS];
+  VF u[BLOCKS], v[BLOCKS], r2[BLOCKS];
 } Discs;
 
 struct Cones {
@@ -74,10 +83,12 @@ static float max_abs(vec3s v)
 }
 
 /* Bit k set when lane k of `in` is true (all ones). */
-static inline uint32_t lanes_mask(I8 in)
+static inline uint32_t lanes_mask(VI in)
 {
-#ifdef __AVX__
-  return (uint32_t)__builtin_ia32_movmskps256((V8)in);
+#if defined __AVX__
+  return (uint32_t)__builtin_ia32_movmskps256((VF)in);
+#elif defined __SSE__
+  return (uint32_t)__builtin_ia32_movmskps((VF)in);
 #else
   uint32_t mask = 0;
   for (int k = 0; k < LANES; k++)
@@ -101,7 +112,7 @@ static inline uint32_t in_cones(const PointCones *pc, int blocks, vec3s w)
   float ww = w.x * w.x + w.y * w.y + w.z * w.z;
   uint32_t mask = pc->always;
   for (int b = 0; b < blocks; b++) {
-    V8 dot = w.x * pc->ax[b] + w.y * pc->ay[b] + w.z * pc->az[b];
+    VF dot = w.x * pc->ax[b] + w.y * pc->ay[b] + w.z * pc->az[b];
     mask |= lanes_mask((dot >= 0.0f) & (dot * dot >= pc->c2[b] * ww)) << (LANES * b);
   }
   return mask;
@@ -132,7 +143,7 @@ static bool in_discs(const Discs *ds, int blocks, vec3s o, uint32_t *mask)
   float v = o.x * ds->e2.x + o.y * ds->e2.y + o.z * ds->e2.z;
   *mask = 0;
   for (int b = 0; b < blocks; b++) {
-    V8 du = u - ds->u[b], dv = v - ds->v[b];
+    VF du = u - ds->u[b], dv = v - ds->v[b];
     *mask |= lanes_mask(du * du + dv * dv <= ds->r2[b]) << (LANES * b);
   }
   return true;
