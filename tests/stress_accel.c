@@ -12,8 +12,10 @@
 
 static float uni(Rng *g, float lo, float hi) { return lo + (hi - lo) * rng_float(g); }
 
-/* n random spheres (some coincident, some tiny) and a plane, prepared. */
-static void random_scene(Scene *s, Rng *g, int n)
+/* One material, the floor y = 0 and n random spheres (some tiny, some
+ * duplicates of the one before: equal distances) within `half` of the
+ * origin across, instances 1 .. n; not prepared. */
+static void spheres_on_floor(Scene *s, Rng *g, int n, float half)
 {
   scene_init(s);
   Material m = {.name = "m", .diffuse = vec_make(0.5f, 0.5f, 0.5f)};
@@ -23,12 +25,18 @@ static void random_scene(Scene *s, Rng *g, int n)
   cr_assert(scene_add_instance(s, &pl), "out of memory");
   for (int k = 0; k < n; k++) {
     Instance in = {.shape = SHAPE_SPHERE, .light = -1};
-    in.sphere.center = vec_make(uni(g, -10, 10), uni(g, 0, 5), uni(g, -10, 10));
+    in.sphere.center = vec_make(uni(g, -half, half), uni(g, 0, 5), uni(g, -half, half));
     in.sphere.radius = k % 7 == 0 ? 1e-3f : uni(g, 0.05f, 1.5f);
-    if (k % 11 == 5) /* a duplicate of the previous sphere: equal distances */
+    if (k % 11 == 5)
       in.sphere = s->instances[s->n_instances - 1].sphere;
     cr_assert(scene_add_instance(s, &in), "out of memory");
   }
+}
+
+/* n random spheres and the floor, prepared, indexed. */
+static void random_scene(Scene *s, Rng *g, int n)
+{
+  spheres_on_floor(s, g, n, 10);
   cr_assert(scene_prepare(s, SCENE_CAMERA | SCENE_LIGHTS), "out of memory");
   cr_assert(accel_build(s), "accel_build (given code) failed");
 }
@@ -141,26 +149,13 @@ static vec3s random_unit(Rng *g)
  * on a sphere's surface. */
 static void cone_scene(Scene *s, Rng *g, int n, int variant)
 {
-  scene_init(s);
-  Material m = {.name = "m", .diffuse = vec_make(0.5f, 0.5f, 0.5f)};
-  cr_assert(scene_add_material(s, &m), "out of memory");
-  Instance pl = {.shape = SHAPE_PLANE, .plane = plane_make(vec_make(0, 0, 0), vec_make(0, 1, 0)),
-                 .light = -1};
-  cr_assert(scene_add_instance(s, &pl), "out of memory");
+  spheres_on_floor(s, g, n, 6);
   if (variant % 2) {
-    pl.plane = plane_make(vec_make(0, -0.5f, 0), vec_make(0.1f, 1, 0.05f));
+    Instance pl = {.shape = SHAPE_PLANE, .light = -1,
+                   .plane = plane_make(vec_make(0, -0.5f, 0), vec_make(0.1f, 1, 0.05f))};
     cr_assert(scene_add_instance(s, &pl), "out of memory");
   }
-  int first = s->n_instances;
-  for (int k = 0; k < n; k++) {
-    Instance in = {.shape = SHAPE_SPHERE, .light = -1};
-    in.sphere.center = vec_make(uni(g, -6, 6), uni(g, 0, 4), uni(g, -6, 6));
-    in.sphere.radius = k % 7 == 3 ? 1e-3f : uni(g, 0.05f, 1.5f);
-    if (k % 5 == 4) /* a copy of the one before: equal distances */
-      in.sphere = s->instances[s->n_instances - 1].sphere;
-    cr_assert(scene_add_instance(s, &in), "out of memory");
-  }
-  const Sphere *inside = &s->instances[first + (int)(rng_float(g) * (float)n)].sphere;
+  const Sphere *inside = &s->instances[1 + (int)(rng_float(g) * (float)n)].sphere;
   s->camera.eye = variant == 2 ? inside->center : vec_make(uni(g, -12, 12), uni(g, 0.5f, 8), 12);
   s->camera.center = vec_make(uni(g, -1, 1), uni(g, 0, 1), uni(g, -1, 1));
   for (int k = 0; k < 2; k++) {
@@ -184,7 +179,7 @@ static vec3s aim(const Scene *s, Rng *g, vec3s from, int n)
 {
   if (rng_float(g) < 0.5f)
     return random_unit(g);
-  const Sphere *sp = &s->instances[s->n_instances - n + (int)(rng_float(g) * (float)n)].sphere;
+  const Sphere *sp = &s->instances[1 + (int)(rng_float(g) * (float)n)].sphere;
   vec3s to_c = glms_vec3_sub(sp->center, from), side = random_unit(g);
   side = glms_vec3_normalize(glms_vec3_sub(side, glms_vec3_scale(to_c, glms_vec3_dot(side, to_c) /
                                                                           glms_vec3_dot(to_c, to_c))));
@@ -278,7 +273,7 @@ Test(accel, cones_give_the_plain_loops_answers)
                     variant, k);
           Ray along = {.o = origin(&g, k % 2 ? 10.0f : 1e6f), .d = glms_vec3_negate(s.lights[2].direction)};
           if (k % 3 == 1) { /* past a sphere's rim, within 1e-3 of its radius */
-            const Sphere *sp = &s.instances[s.n_instances - n + k % n].sphere;
+            const Sphere *sp = &s.instances[1 + k % n].sphere;
             vec3s side = random_unit(&g);
             side = glms_vec3_normalize(
                 glms_vec3_sub(side, glms_vec3_scale(along.d, glms_vec3_dot(side, along.d))));

@@ -198,8 +198,8 @@ static void point_cones(PointCones *pc, vec3s p, double rho, const Ball *b, int 
       a[i] = b[k].c[i] - p.raw[i];
       dist2 += a[i] * a[i];
     }
-    double dist = sqrt(dist2);
-    double s = (b[k].r + rho) / dist + 0x1p-9;
+    double dist = sqrt(dist2), reach = b[k].r + rho;
+    double s = dist > reach ? reach / dist + 0x1p-9 : 1.0;
     if (!(s < 1.0)) { /* the ball holds p, or nearly: every direction */
       pc->always |= 1u << k;
       continue;
