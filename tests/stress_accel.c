@@ -181,8 +181,11 @@ static vec3s aim(const Scene *s, Rng *g, vec3s from, int n)
     return random_unit(g);
   const Sphere *sp = &s->instances[1 + (int)(rng_float(g) * (float)n)].sphere;
   vec3s to_c = glms_vec3_sub(sp->center, from), side = random_unit(g);
-  side = glms_vec3_normalize(glms_vec3_sub(side, glms_vec3_scale(to_c, glms_vec3_dot(side, to_c) /
-                                                                          glms_vec3_dot(to_c, to_c))));
+  float cc = glms_vec3_dot(to_c, to_c);
+  if (!(cc > 0.0f)) /* from the centre (the eye inside a sphere): any way */
+    return side;
+  side = glms_vec3_normalize(
+      glms_vec3_sub(side, glms_vec3_scale(to_c, glms_vec3_dot(side, to_c) / cc)));
   vec3s rim = glms_vec3_add(sp->center, glms_vec3_scale(side, sp->radius * uni(g, 0.999f, 1.001f)));
   return glms_vec3_normalize(glms_vec3_sub(rim, from));
 }

@@ -48,9 +48,9 @@ typedef int VI __attribute__((vector_size(LANES * sizeof(int))));
  * widened half-angles (2 in the lanes past the spheres: never met), and the
  * balls that hold the point. */
 typedef struct PointCones {
+  VF ax[BLOCKS], ay[BLOCKS], az[BLOCKS], c2[BLOCKS];
   vec3s p;
   float rho; /* shadow rays ending within rho of p are known */
-  VF ax[BLOCKS], ay[BLOCKS], az[BLOCKS], c2[BLOCKS];
   uint32_t always;
 } PointCones;
 
@@ -276,7 +276,7 @@ Cones *cones_build(const Scene *scene, const int *ids, int n)
     const Sphere *s = &scene->instances[ids[k]].sphere;
     /* sphere_box's padding (accel.c), taken a little wider. */
     double r = s->radius;
-    double big = fmax(fabs(s->center.x), fmax(fabs(s->center.y), fabs(s->center.z)));
+    double big = vec_max_abs(s->center);
     for (int i = 0; i < 3; i++)
       b[k].c[i] = s->center.raw[i];
     b[k].r = r + 0x1p-15 * r + 0x1p-19 * (big + r);
