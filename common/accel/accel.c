@@ -1,8 +1,10 @@
 /* Acceleration structure (docs/performance.md): the lit spheres under a
- * bounding volume hierarchy (common/accel/bvh.c), everything else in a list.
- * The boxes only choose which instances a ray meets; each one met is tested
- * with scene_instance_hit_t, the shape's own function, so the answers are
- * those of scene.c's plain loop. */
+ * bounding volume hierarchy (common/accel/bvh.c), everything else in a list;
+ * in scenes of at most 16 spheres, their cones seen from the eye and the
+ * lights (common/accel/cones.c) for the rays those know. The boxes and cones
+ * only choose which instances a ray meets; each one met is tested with
+ * scene_instance_hit_t, the shape's own function, so the answers are those
+ * of scene.c's plain loop. */
 #include "accel/accel.h"
 
 #include <limits.h>

@@ -1,6 +1,7 @@
 /* Acceleration structure for the scene queries (docs/performance.md): a
  * bounding volume hierarchy over the lit spheres, the other instances in a
- * list. It only chooses which instances a ray is tested against; every test
+ * list, and for small scenes the spheres' cones seen from the eye and the
+ * lights (accel/cones.c). It only chooses which instances a ray is tested against; every test
  * is the shape's own function (scene_instance_hit_t: the student's
  * sphere_hit_t, plane_hit_t). */
 #ifndef RT_ACCEL_H
@@ -11,8 +12,9 @@
 /* Build scene->index (replacing any). The environment variable RT_ACCEL
  * chooses the layout for measurements: "loop" (no index: scene.c's plain loop
  * over the instances), "flat" (the spheres in one leaf, behind one bounding
- * box), "bvh" (always a hierarchy); unset, the hierarchy is built from
- * ACCEL_FLAT_MAX + 1 spheres on. Answers are identical whatever the layout.
+ * box, no cones), "bvh" (always a hierarchy); unset, the hierarchy is built
+ * from ACCEL_FLAT_MAX + 1 spheres on, and up to ACCEL_FLAT_MAX the one leaf
+ * with the cones. Answers are identical whatever the layout.
  * False (one line printed) when out of memory. */
 bool accel_build(Scene *scene);
 
