@@ -257,12 +257,11 @@ Test(accel, cones_give_the_plain_loops_answers)
             }
           }
           /* Ends that stray up to 1e-2 of the distance from the light: some
-           * beyond the cones' margin, left to the hierarchy. Origins farther
-           * out only with ends the cones take (a stray of at most 1e-6): the
-           * hierarchy's boxes are padded for sphere_hit_t's rounding near the
-           * scene, not for its 2^-23 of the distance from a far origin, and
-           * may then differ from the loop on a grazing ray (docs/performance.md,
-           * "Cones from the eye and the lights"). */
+           * beyond the cones' margin, left to the box. Origins farther out
+           * (up to 1e2) only with ends the cones take (a stray of at most
+           * 1e-6): from 1e3 and more, a tiny sphere's hit within a float step
+           * of tmax is a hit for sphere_hit_t and beyond tmax for the box
+           * (docs/performance.md, "Cones from the eye and the lights"). */
           const Light *pt = &s.lights[k % 2];
           float rel = powf(10.0f, -uni(&g, 2, 8));
           vec3s o = origin(&g, rel <= 1e-6f ? 10.0f : 1.0f);
