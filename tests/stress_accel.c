@@ -41,16 +41,21 @@ static void random_scene(Scene *s, Rng *g, int n)
   cr_assert(accel_build(s), "accel_build (given code) failed");
 }
 
+static vec3s random_unit(Rng *g)
+{
+  return glms_vec3_normalize(vec_make(uni(g, -1, 1), uni(g, -1, 1), uni(g, -1, 1)));
+}
+
 static Ray random_ray(const Scene *s, Rng *g)
 {
   Ray r = {.o = vec_make(uni(g, -12, 12), uni(g, 0.5f, 8), uni(g, -12, 12))};
   if (rng_float(g) < 0.3f) { /* aim at the rim of a sphere: grazing */
     const Sphere *sp = &s->instances[1 + (int)(rng_float(g) * (float)(s->n_instances - 1))].sphere;
-    vec3s side = glms_vec3_normalize(vec_make(uni(g, -1, 1), uni(g, -1, 1), uni(g, -1, 1)));
+    vec3s side = random_unit(g);
     vec3s aim = glms_vec3_add(sp->center, glms_vec3_scale(side, sp->radius));
     r.d = glms_vec3_normalize(glms_vec3_sub(aim, r.o));
   } else {
-    r.d = glms_vec3_normalize(vec_make(uni(g, -1, 1), uni(g, -1, 1), uni(g, -1, 1)));
+    r.d = random_unit(g);
   }
   return r;
 }
@@ -136,11 +141,6 @@ static bool loop_any(const Scene *s, Ray r, float tmax)
     if (scene_instance_hit_t(&s->instances[m], r, tmax) < tmax)
       return true;
   return false;
-}
-
-static vec3s random_unit(Rng *g)
-{
-  return glms_vec3_normalize(vec_make(uni(g, -1, 1), uni(g, -1, 1), uni(g, -1, 1)));
 }
 
 /* n spheres (1..16: the scenes that get cones), the floor, in odd variants a

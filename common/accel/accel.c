@@ -223,12 +223,10 @@ static int layout_wanted(void)
        : strcmp(env, "bvh") == 0  ? 2 : -1;
 }
 
-/* A sphere's box, padded by a relative 2^-16 of the radius and 2^-20 of the
- * coordinates' magnitude so that a grazing ray sphere_hit_t accepts is never
- * culled by it. */
+/* A sphere's box, padded (sphere_pad, accel/cones.h). */
 static Box sphere_box(const Sphere *s)
 {
-  float pad = 0x1p-16f * s->radius + 0x1p-20f * (vec_max_abs(s->center) + s->radius);
+  float pad = sphere_pad(s);
   Box b = {{0.0f, 0.0f, 0.0f, 0.0f}, {0.0f, 0.0f, 0.0f, 0.0f}};
   for (int a = 0; a < 3; a++) {
     b.lo[a] = s->center.raw[a] - s->radius - pad;
@@ -285,8 +283,8 @@ bool accel_build(Scene *scene)
   }
   if (ok && n > 0)
     ok = build_tree(acc, scene, ids, n, layout == 1 || (layout < 0 && n <= ACCEL_FLAT_MAX));
-  if (ok && layout < 0 && n > 0 && n <= ACCEL_FLAT_MAX && n <= CONES_MAX)
-    acc->cones = cones_build(scene, ids, n); /* NULL: the rays go to the tree */
+  if (ok && layout < 0 && n <= ACCEL_FLAT_MAX)
+    acc->cones = cones_build(scene, ids, n); /* NULL: the rays go to the leaf */
   free(ids);
   if (!ok) {
     fprintf(stderr, "accel: out of memory for %d instances\n", scene->n_instances);

@@ -15,7 +15,7 @@
  * origin, projected on the plane across d, lies within R of the centre's
  * projection.
  *
- * R is the radius padded as for the hierarchy's boxes (accel.c, sphere_box),
+ * R is the radius padded by twice sphere_pad (cones.h, the hierarchy's margin),
  * so a grazing ray that sphere_hit_t accepts is never left out; s is widened
  * by 2^-9 and the discs by 2^-18 of the scene's size, far above the rounding
  * of the float comparisons (about 2^-20). A ball holding P (or nearly) is a
@@ -62,11 +62,11 @@ typedef struct Discs {
   VF u[BLOCKS], v[BLOCKS], r2[BLOCKS];
 } Discs;
 
+/* The lanes past the spheres never match: their c2 is 2 (usable directions
+ * have |w| > 0) and their r2 is -1. */
 struct Cones {
-  int n, blocks;
-  uint32_t all; /* bits 0 .. n - 1 */
+  int blocks;
   int ids[CONES_MAX];
-  bool has_eye;
   int n_points, n_discs;
   PointCones eye;
   PointCones points[MAX_LIGHTS];
@@ -75,6 +75,7 @@ struct Cones {
 
 /* ---------------------------------------------------------------- queries */
 
+/* vec_max_abs without libm's fmaxf (a call, per ray here). */
 static float max_abs(vec3s v)
 {
   float x = fabsf(v.x), y = fabsf(v.y), z = fabsf(v.z);
@@ -125,10 +126,10 @@ const int *cones_spheres(const Cones *c)
 
 bool cones_from_eye(const Cones *c, const Ray *r, uint32_t *mask)
 {
-  if (!c->has_eye || r->o.x != c->eye.p.x || r->o.y != c->eye.p.y || r->o.z != c->eye.p.z ||
+  if (r->o.x != c->eye.p.x || r->o.y != c->eye.p.y || r->o.z != c->eye.p.z ||
       !usable(r->d))
     return false;
-  *mask = in_cones(&c->eye, c->blocks, r->d) & c->all;
+  *mask = in_cones(&c->eye, c->blocks, r->d);
   return true;
 }
 
@@ -154,7 +155,7 @@ bool cones_toward_light(const Cones *c, const Ray *r, float tmax, uint32_t *mask
   for (int k = 0; k < c->n_discs; k++) {
     const Discs *ds = &c->discs[k];
     if (r->d.x == ds->d.x && r->d.y == ds->d.y && r->d.z == ds->d.z)
-      return in_discs(ds, c->blocks, r->o, mask) && ((*mask &= c->all), true);
+      return in_discs(ds, c->blocks, r->o, mask);
   }
   if (!(tmax < INFINITY) || c->n_points == 0)
     return false;
@@ -169,7 +170,7 @@ bool cones_toward_light(const Cones *c, const Ray *r, float tmax, uint32_t *mask
       vec3s w = glms_vec3_sub(r->o, pc->p);
       if (!usable(w))
         return false;
-      *mask = in_cones(pc, c->blocks, w) & c->all;
+      *mask = in_cones(pc, c->blocks, w);
       return true;
     }
   }
@@ -274,18 +275,12 @@ Cones *cones_build(const Scene *scene, const int *ids, int n)
   Ball b[CONES_MAX];
   for (int k = 0; k < n; k++) {
     const Sphere *s = &scene->instances[ids[k]].sphere;
-    /* sphere_box's padding (accel.c), taken a little wider. */
-    double r = s->radius;
-    double big = vec_max_abs(s->center);
     for (int i = 0; i < 3; i++)
       b[k].c[i] = s->center.raw[i];
-    b[k].r = r + 0x1p-15 * r + 0x1p-19 * (big + r);
+    b[k].r = (double)s->radius + 2.0 * sphere_pad(s);
     c->ids[k] = ids[k];
   }
-  c->n = n;
-  c->all = n == 32 ? ~0u : (1u << n) - 1;
   c->blocks = (n + LANES - 1) / LANES;
-  c->has_eye = true;
   point_cones(&c->eye, scene->camera.eye, 0.0, b, n);
   for (int k = 0; k < scene->n_lights; k++) {
     const Light *light = &scene->lights[k];

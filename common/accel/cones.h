@@ -15,6 +15,15 @@
 
 typedef struct Cones Cones;
 
+/* The margin every culling test adds to a sphere's radius (the hierarchy's
+ * boxes; the cones take twice it): a relative 2^-16 of the radius and 2^-20
+ * of the coordinates' magnitude, so that a grazing ray sphere_hit_t accepts
+ * is never culled. */
+static inline float sphere_pad(const Sphere *s)
+{
+  return 0x1p-16f * s->radius + 0x1p-20f * (vec_max_abs(s->center) + s->radius);
+}
+
 /* The cones of the lit spheres ids[0 .. n), 1 <= n <= CONES_MAX, listed in
  * increasing instance order, for scene->camera's eye and the scene's point
  * and directional lights; NULL when none could be built (the caller then
