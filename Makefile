@@ -51,8 +51,8 @@ CFLAGS  := -std=c11 $(OPT) -g -fopenmp -ffp-contract=off -fno-math-errno \
 # --trace and --aov then record nothing).
 CFLAGS  += $(if $(TRACE_OFF),-DTRACE_COMPILED_OUT)
 # pkg-config runs when a recipe needs it, after the dependency check below.
-PKG_CFLAGS = $(shell pkg-config --cflags cglm stb libpng)
-LDLIBS  := -fopenmp -lpng -lstb -lm
+PKG_CFLAGS = $(shell pkg-config --cflags cglm stb libpng zlib)
+LDLIBS  := -fopenmp -lpng -lz -lstb -lm
 # Link flags only: with -flto, gcc 12 re-runs its warnings at link time and
 # reports false -Wmaybe-uninitialized / -Wuninitialized on `Hit hit;` in the
 # steps (scene_intersect fills it whenever it returns true; gcc follows a path
@@ -71,7 +71,7 @@ endif
 # ---------------------------------------------------------------- dependencies
 # Debian packages the build, the tests and the benchmark need. Run as root, the
 # Makefile installs what is missing; otherwise it prints the command to run.
-DEB_BUILD := gcc make pkg-config libc6-dev libstb-dev libcglm-dev libpng-dev \
+DEB_BUILD := gcc make pkg-config libc6-dev libstb-dev libcglm-dev libpng-dev zlib1g-dev \
              libcriterion-dev libmpfr-dev
 DEB_BENCH := gnuplot-nox povray hyperfine
 

@@ -15,9 +15,12 @@
 #include <sys/resource.h>
 #include <sys/stat.h>
 
+#include <omp.h>
+#include <png.h>
 #include <stb_image.h>
 
 #include "app/image.h"
+#include "film.h"
 #include "testfiles.h"
 
 #define OUT_DIR BUILD_DIR "/test-out"
@@ -110,6 +113,76 @@ Test(image, png_of_the_f_is_upright_in_the_file_and_reads_back)
   CHECK_DONE(&l);
   stbi_image_free(px);
   free(back);
+}
+
+/* The whole file, malloc'd; NULL when it cannot be read. */
+static unsigned char *file_bytes(const char *path, long *len)
+{
+  FILE *f = fopen(path, "rb");
+  unsigned char *b = NULL;
+  if (f && fseek(f, 0, SEEK_END) == 0 && (*len = ftell(f)) > 0 && fseek(f, 0, SEEK_SET) == 0 &&
+      (b = malloc((size_t)*len)) && fread(b, 1, (size_t)*len, f) != (size_t)*len) {
+    free(b);
+    b = NULL;
+  }
+  if (f)
+    fclose(f);
+  return b;
+}
+
+/* A picture taller than one band of the PNG encoder (its rows are compressed
+ * in bands of at least 64 KB, one band per thread at a time; docs/
+ * performance.md, "PNG in bands"), read back through libpng, which checks
+ * every chunk's CRC and the stream's Adler-32: each byte is film_to_byte's,
+ * and the file is the same with 1 thread and with 4. */
+Test(image, png_in_bands_reads_back_through_libpng_the_same_for_any_thread_count)
+{
+  enum { W = 301, H = 517 }; /* 906 bytes a row: 73 rows a band, 8 bands */
+  float *rgb = malloc((size_t)W * H * 3 * sizeof *rgb);
+  REQUIRE(rgb != NULL, "out of memory");
+  uint32_t x = 12345u;
+  for (int k = 0; k < W * H * 3; k++) { /* ramps with noise, some out of [0, 1] */
+    int i = (k / 3) % W, j = (k / 3) / W, c = k % 3;
+    x = x * 1664525u + 1013904223u;
+    rgb[k] = (float)((3 * i + 5 * j + 40 * c) % 700) / 600.0f - 0.1f +
+             (float)(x >> 8) / 16777216.0f * 0.05f;
+  }
+  mkdir(OUT_DIR, 0755);
+  const char *paths[2] = {OUT_DIR "/bands-1.png", OUT_DIR "/bands-4.png"};
+  int threads[2] = {1, 4};
+  for (int k = 0; k < 2; k++) {
+    omp_set_num_threads(threads[k]);
+    REQUIRE(image_save(paths[k], W, H, rgb, TONEMAP_SRGB), "cannot write %s", paths[k]);
+  }
+  long len[2] = {0, 0};
+  unsigned char *file[2] = {file_bytes(paths[0], &len[0]), file_bytes(paths[1], &len[1])};
+  REQUIRE(file[0] && file[1], "cannot read %s and %s back", paths[0], paths[1]);
+  Check same = CHECK("image_save (PNG)", FILES);
+  CHECK_THAT(&same, len[0] == len[1] && memcmp(file[0], file[1], (size_t)len[0]) == 0,
+             "the PNG of a %d x %d picture differs between 1 thread (%ld bytes) and 4 "
+             "(%ld bytes)", W, H, len[0], len[1]);
+  CHECK_DONE(&same);
+
+  png_image im = {.version = PNG_IMAGE_VERSION};
+  unsigned char *px = malloc((size_t)W * H * 3);
+  bool read = px && png_image_begin_read_from_memory(&im, file[1], (size_t)len[1]) &&
+              (im.format = PNG_FORMAT_RGB, im.width == W && im.height == H) &&
+              png_image_finish_read(&im, NULL, px, 0, NULL);
+  REQUIRE(read, "libpng cannot read %s back: %s", paths[1], im.message);
+  Check c = CHECK("image_save (PNG)", FILES);
+  for (int k = 0; k < W * H * 3; k++) {
+    int i = (k / 3) % W, row = (k / 3) / W; /* from the top */
+    int want = film_to_byte(rgb[((H - 1 - row) * W + i) * 3 + k % 3], TONEMAP_SRGB);
+    CHECK_THAT(&c, px[k] == want, "the %d x %d PNG read back by libpng, row %d from the top, "
+               "column %d, channel %d\n  expected %d (film_to_byte)\n  got      %d",
+               W, H, row, i, k % 3, want, px[k]);
+  }
+  CHECK_DONE(&c);
+  png_image_free(&im);
+  free(px);
+  free(file[0]);
+  free(file[1]);
+  free(rgb);
 }
 
 /* Read a little-endian float. */
