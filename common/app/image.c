@@ -195,7 +195,7 @@ static bool write_png(OutFile *out, const Bytes *b)
   if (!band)
     return false;
   bool ok = true;
-#pragma omp parallel for schedule(dynamic, 1) reduction(&& : ok)
+#pragma omp parallel for schedule(dynamic, 1) reduction(&& : ok) if (bands > 1)
   for (int k = 0; k < bands; k++) {
     int j1 = (k + 1) * rows < b->h ? (k + 1) * rows : b->h;
     band_encode(b, k * rows, j1, k == 0, k == bands - 1, &band[k]);
