@@ -131,10 +131,10 @@ static unsigned char *file_bytes(const char *path, long *len)
 }
 
 /* A picture taller than one band of the PNG encoder (its rows are compressed
- * in bands of at least 64 KB, one band per thread at a time; docs/
- * performance.md, "PNG in bands"), read back through libpng, which checks
- * every chunk's CRC and the stream's Adler-32: each byte is film_to_byte's,
- * and the file is the same with 1 thread and with 4. */
+ * in bands of at least 64 KB, one band per thread at a time:
+ * docs/performance.md, "PNG in bands"), read back through libpng, which
+ * checks every chunk's CRC and the stream's Adler-32: each byte is
+ * film_to_byte's, and the file is the same with 1 thread and with 4. */
 Test(image, png_in_bands_reads_back_through_libpng_the_same_for_any_thread_count)
 {
   enum { W = 301, H = 517 }; /* 906 bytes a row: 73 rows a band, 8 bands */
