@@ -165,10 +165,13 @@ Test(image, png_in_bands_reads_back_through_libpng_the_same_for_any_thread_count
 
   png_image im = {.version = PNG_IMAGE_VERSION};
   unsigned char *px = malloc((size_t)W * H * 3);
-  bool read = px && png_image_begin_read_from_memory(&im, file[1], (size_t)len[1]) &&
-              (im.format = PNG_FORMAT_RGB, im.width == W && im.height == H) &&
-              png_image_finish_read(&im, NULL, px, 0, NULL);
-  REQUIRE(read, "libpng cannot read %s back: %s", paths[1], im.message);
+  REQUIRE(px && png_image_begin_read_from_memory(&im, file[1], (size_t)len[1]),
+          "libpng cannot read %s back: %s", paths[1], im.message);
+  REQUIRE(im.width == W && im.height == H, "%s read back as %u x %u, not %d x %d", paths[1],
+          im.width, im.height, W, H);
+  im.format = PNG_FORMAT_RGB;
+  REQUIRE(png_image_finish_read(&im, NULL, px, 0, NULL), "libpng cannot read %s back: %s",
+          paths[1], im.message);
   Check c = CHECK("image_save (PNG)", FILES);
   for (int k = 0; k < W * H * 3; k++) {
     int i = (k / 3) % W, row = (k / 3) / W; /* from the top */

@@ -109,15 +109,17 @@ static bool write_pfm(OutFile *out, int w, int h, const float *rgb)
 enum { BAND_MIN_BYTES = 1 << 16 };
 
 typedef struct Band {
-  unsigned char *z; /* compressed bytes, room for the zlib header and Adler-32 */
-  size_t len;       /* bytes of z written, header and Adler-32 included */
+  unsigned char *z; /* compressed bytes, with room for the zlib header (the
+                       first band) and the Adler-32 (the last) */
+  size_t len;       /* bytes of z written */
   uLong adler;      /* of this band's filtered rows */
   size_t raw;       /* filtered bytes */
   bool ok;
 } Band;
 
 /* Rows [j0, j1) of the upright picture, tone mapped, filtered and
- * compressed into *band; `last`: the band that ends the stream. */
+ * compressed into *band: after the zlib header when `first`, ended by the
+ * final block when `last`. */
 static void band_encode(const Bytes *b, int j0, int j1, bool first, bool last, Band *band)
 {
   size_t stride = 1 + (size_t)b->w * 3;
