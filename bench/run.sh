@@ -22,7 +22,7 @@ mkdir -p "$B" "$D" "$REF"
 if [ -z "$PREBUILT" ]; then
   CFL="-std=c11 -O2 -Icommon $(pkg-config --cflags cglm stb)"
   gcc $CFL bench/gen_spheres.c -lm -o "$B/gen_spheres" || exit 1
-  gcc $CFL bench/rmse.c build/libcommon.a -fopenmp -lpng -lstb -lm -o "$B/rmse" || exit 1
+  gcc $CFL bench/rmse.c build/libcommon.a -fopenmp -lpng -lz -lstb -lm -o "$B/rmse" || exit 1
 fi
 POV=$(command -v povray || true)
 POV_SCENE=bench/spheres.pov

@@ -11,11 +11,11 @@ make --no-print-directory build/bin/07-antialiasing >/dev/null
 gcc -std=c11 -O3 -march=native -fopenmp -ffp-contract=off -D_POSIX_C_SOURCE=200809L -Wall -Wextra \
   -Werror -Icommon -Isteps/07-antialiasing $(pkg-config --cflags cglm stb) \
   tools/aa-mistakes.c steps/07-antialiasing/shade.c build/obj/gen/07-antialiasing-scene.o \
-  build/libcommon.a -lpng -lstb -lm -o $bin/aa-mistakes
+  build/libcommon.a -lpng -lz -lstb -lm -o $bin/aa-mistakes
 gcc -std=c11 -O3 -march=native -fopenmp -ffp-contract=off -D_POSIX_C_SOURCE=200809L -Wall -Wextra \
   -Werror -Icommon -Isteps/07-antialiasing $(pkg-config --cflags cglm stb libpng) \
   tools/aa-samples.c steps/07-antialiasing/shade.c build/obj/gen/07-antialiasing-scene.o \
-  build/libcommon.a -lpng -lstb -lm -o $bin/aa-samples
+  build/libcommon.a -lpng -lz -lstb -lm -o $bin/aa-samples
 mkdir -p docs/img
 for s in grid random jitter sobol; do
   $bin/aa-mistakes points $s 16 docs/img/07-points-$s.png

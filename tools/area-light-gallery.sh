@@ -29,7 +29,7 @@ mistake() {
   # -march=native as the Makefile: cglm aligns its types (and so Scene) by it.
   gcc -std=c11 -O3 -march=native -fopenmp -ffp-contract=off -D_POSIX_C_SOURCE=200809L -Icommon -I$tmp/$name \
     $(pkg-config --cflags cglm stb) $tmp/$name/main.c $tmp/$name/shade.c \
-    build/obj/gen/08-area-lights-scene.o build/libcommon.a -fopenmp -lpng -lstb -lm -o $tmp/$name/bin
+    build/obj/gen/08-area-lights-scene.o build/libcommon.a -fopenmp -lpng -lz -lstb -lm -o $tmp/$name/bin
   $tmp/$name/bin "${size[@]}" ${scene:+--scene $scene} -o $out/$name.png
 }
 # Same pattern everywhere: the light samples keyed by seed only, not by pixel.
