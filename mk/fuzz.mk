@@ -43,7 +43,7 @@ $(FUZZ_BUILD)/obj/entry-%.o: tests/fuzz/libfuzzer.c tests/fuzz/fuzz.h tests/fuzz
 	@clang $(FUZZ_CFLAGS) -DFUZZ_ENTRY=fuzz_$* -fsanitize=fuzzer-no-link -c $< -o $@
 $(FUZZ_BUILD)/fuzz-%: $(FUZZ_BUILD)/obj/entry-%.o $(FUZZ_LIB_OBJ)
 	@echo "LD $@"
-	@clang $(FUZZ_CFLAGS) -fsanitize=fuzzer $^ -fopenmp -lpng -lz -lstb -lm -o $@
+	@clang $(FUZZ_CFLAGS) -fsanitize=fuzzer $^ $(LDLIBS) -o $@
 
 # The seeds of each target, gathered into build/fuzz/seeds/TARGET: command
 # lines are cli.cases' "$ ARGS" lines with NULs between the words.

@@ -115,21 +115,6 @@ Test(image, png_of_the_f_is_upright_in_the_file_and_reads_back)
   free(back);
 }
 
-/* The whole file, malloc'd; NULL when it cannot be read. */
-static unsigned char *file_bytes(const char *path, long *len)
-{
-  FILE *f = fopen(path, "rb");
-  unsigned char *b = NULL;
-  if (f && fseek(f, 0, SEEK_END) == 0 && (*len = ftell(f)) > 0 && fseek(f, 0, SEEK_SET) == 0 &&
-      (b = malloc((size_t)*len)) && fread(b, 1, (size_t)*len, f) != (size_t)*len) {
-    free(b);
-    b = NULL;
-  }
-  if (f)
-    fclose(f);
-  return b;
-}
-
 /* A picture taller than one band of the PNG encoder (its rows are compressed
  * in bands of at least 64 KB, one band per thread at a time:
  * docs/performance.md, "PNG in bands"), read back through libpng, which
@@ -155,7 +140,7 @@ Test(image, png_in_bands_reads_back_through_libpng_the_same_for_any_thread_count
     REQUIRE(image_save(paths[k], W, H, rgb, TONEMAP_SRGB), "cannot write %s", paths[k]);
   }
   long len[2] = {0, 0};
-  unsigned char *file[2] = {file_bytes(paths[0], &len[0]), file_bytes(paths[1], &len[1])};
+  char *file[2] = {testfiles_slurp(paths[0], &len[0]), testfiles_slurp(paths[1], &len[1])};
   REQUIRE(file[0] && file[1], "cannot read %s and %s back", paths[0], paths[1]);
   Check same = CHECK("image_save (PNG)", FILES);
   CHECK_THAT(&same, len[0] == len[1] && memcmp(file[0], file[1], (size_t)len[0]) == 0,
