@@ -9,7 +9,7 @@
 # gone are removed. docs/reliability.md, "Sanitizers". Usage: tools/omp-stale.sh
 uid=$(id -u)
 for f in /dev/shm/__KMP_REGISTERED_LIB_*_"$uid"; do
-  [ -f "$f" ] && [ ! -s "$f" ] && [ -O "$f" ] || continue
+  if [ ! -f "$f" ] || [ -s "$f" ] || [ ! -O "$f" ]; then continue; fi
   pid=${f#/dev/shm/__KMP_REGISTERED_LIB_}
   pid=${pid%_"$uid"}
   case $pid in '' | *[!0-9]*) continue ;; esac
