@@ -6,6 +6,7 @@
 #include "check.h"
 
 #include <dirent.h>
+#include <math.h>
 #include <stdlib.h>
 #include <unistd.h>
 
@@ -203,5 +204,120 @@ Test(parse_pieces, a_mapped_file_parses_as_its_text, .timeout = 120)
       scene_free(&from_text);
   }
   free(text);
+  CHECK_DONE(&c);
+}
+
+/* A small generator (xorshift64*), seeded: the same lines every run. */
+static uint64_t next(uint64_t *s)
+{
+  *s ^= *s >> 12;
+  *s ^= *s << 25;
+  *s ^= *s >> 27;
+  return *s * 2685821657736338717ull;
+}
+
+static const char *pick(uint64_t *s, const char *const *from, size_t n)
+{
+  return from[next(s) % n];
+}
+
+/* A number as a scene might write it, or a word close to one. */
+static void number_word(uint64_t *s, char *out, size_t size)
+{
+  static const char *const odd[] = {
+      "1e18", "-1e18", "1.0000001e18", "1e19", "1e-18", "9.9e-19", "0", "-0", "+2", ".5",
+      "5.", "1e", "1e+", "--1", "1.2.3", "1,5", "0x1p3", "inf", "nan", "1e-40", "1e39",
+      "12345678901234567890", "0.000000000000000000000001", "1E3", "2e-3x", "-", ".",
+      "1e0000000000000000000000000000000000000000000000000000000000000001", /* 66 bytes */
+      "00000000000000000000000000000000000000000000000000000000000001.5"};  /* 64 */
+  if (next(s) % 10 == 0) {
+    snprintf(out, size, "%s", pick(s, odd, sizeof odd / sizeof *odd));
+    return;
+  }
+  double v = ((double)(next(s) % 2000001) - 1000000.0) / pow(10.0, (double)(next(s) % 9));
+  static const char *const fmt[] = {"%g", "%.9g", "%.3f", "%e", "%.17g"};
+  snprintf(out, size, pick(s, fmt, sizeof fmt / sizeof *fmt), v);
+}
+
+/* A sphere line, often the one sphere_line reads, often one a byte or a
+ * word away from it (spaces, tabs, '\r', a comment, another order, another
+ * keyword, a name that is not one, an undefined or later-defined material). */
+static size_t sphere_variant(uint64_t *s, char *out, size_t size)
+{
+  static const char *const names[] = {"m", "late", "nowhere", "_x9", "9x", "a-b", "M",
+      "aaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaa",  /* 63 */
+      "aaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaa", /* 64 */
+      "caf\xc3\xa9", "m#c", "m\tx"};
+  static const char *const gaps[] = {" ", " ", " ", " ", " ", " ", "  ", "\t", " \t"};
+  bool spaced = next(s) % 8 == 0; /* gaps other than one space */
+  char x[96], y[96], z[96], r[96];
+  number_word(s, x, sizeof x);
+  number_word(s, y, sizeof y);
+  number_word(s, z, sizeof z);
+  number_word(s, r, sizeof r);
+  if (next(s) % 4)
+    snprintf(r, sizeof r, "%g", (double)(next(s) % 1000 + 1) / 100.0);
+  const char *w[9] = {"sphere", "center", x, y, z, "radius", r, "material",
+                      next(s) % 3 ? names[next(s) % 2] : pick(s, names, sizeof names / sizeof *names)};
+  int n = 9;
+  switch (next(s) % 24) {
+  case 0: w[0] = "Sphere"; break;
+  case 1: w[1] = "radius", w[5] = "center"; break;
+  case 2: n = 8; break;
+  case 3: n = 7; break;
+  case 4: w[7] = "materials"; break;
+  default: break;
+  }
+  size_t len = 0;
+  if (next(s) % 16 == 0)
+    out[len++] = ' ';
+  for (int k = 0; k < n; k++)
+    len += (size_t)snprintf(out + len, size - len, "%s%s",
+                            k == 0 ? "" : spaced ? pick(s, gaps, 9) : " ", w[k]);
+  static const char *const tails[] = {" ", "\r", " # note", "#x", " 1"};
+  if (next(s) % 6 == 0)
+    len += (size_t)snprintf(out + len, size - len, "%s", pick(s, tails, 5));
+  return len;
+}
+
+/* The sphere lines that parser_statements reads straight from the text
+ * (sphere_line) against the general path (parser_fast_lines off): 20000
+ * lines, each alone between a material defined before and one defined
+ * after, with and without a final newline; the same scene, or the same
+ * message. */
+Test(parse_pieces, sphere_lines_read_fast_parse_as_the_general_path, .timeout = 60)
+{
+  Check c = CHECK("parser_statements", "docs/reliability.md, \"Fourth pass\"");
+  uint64_t s = 0x243F6A8885A308D3ull;
+  int fast = 0;
+  for (int k = 0; k < 20000; k++) {
+    char line[512], text[1024];
+    size_t n = sphere_variant(&s, line, sizeof line);
+    bool newline = k % 2;
+    size_t len = (size_t)snprintf(text, sizeof text, "film 8 6\nmaterial m diffuse 1 1 1\n"
+                                  "%s%s", line, newline ? "\n" : "");
+    if (k % 4 < 2) /* `late` defined after its use */
+      len += (size_t)snprintf(text + len, sizeof text - len, "%smaterial late diffuse 1 1 1\n",
+                              newline ? "" : "\n");
+    char err_f[512], err_g[512];
+    Scene a, b;
+    parser_fast_lines = true;
+    bool ok_f = parse_in_pieces(text, len, 1, &a, err_f, sizeof err_f);
+    parser_fast_lines = false;
+    bool ok_g = parse_in_pieces(text, len, 1, &b, err_g, sizeof err_g);
+    fast += ok_g;
+    CHECK_THAT(&c, ok_f == ok_g && strcmp(err_f, err_g) == 0 && (!ok_g || same_scene(&a, &b)),
+               "the line '%.*s'%s:\n  expected (general path) %s%.200s\n  got (fast path)  "
+               "    %s%.200s", (int)n, line, newline ? " and a newline" : "",
+               ok_g ? "a scene" : "the error ", err_g,
+               ok_f ? (ok_g ? "a different scene" : "a scene") : "the error ", err_f);
+    if (ok_f)
+      scene_free(&a);
+    if (ok_g)
+      scene_free(&b);
+  }
+  parser_fast_lines = true;
+  CHECK_THAT(&c, fast > 5000 && fast < 18000, "expected both good and bad lines among the "
+             "20000, found %d good", fast);
   CHECK_DONE(&c);
 }

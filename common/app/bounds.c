@@ -34,7 +34,7 @@ bool bounds_direction(Lexer *lx, const Field *f, const char *what)
 bool bounds_length(Lexer *lx, const Field *f, const char *what)
 {
   char text[LEXER_TOKEN_MAX];
-  if (f->v.x >= LEXER_MIN_LENGTH && f->v.x <= LEXER_MAX_COORD)
+  if (bounds_length_ok(f->v.x))
     return true;
   fields_text(lx, f, 1, text, sizeof text);
   if (!(f->v.x > 0.0f))

@@ -6,7 +6,21 @@
 #ifndef RT_BOUNDS_H
 #define RT_BOUNDS_H
 
+#include <math.h>
+
 #include "app/fields.h"
+
+/* A coordinate the scene may hold: |v| <= LEXER_MAX_COORD (not NaN). */
+static inline bool bounds_coordinate_ok(float v)
+{
+  return fabsf(v) <= LEXER_MAX_COORD;
+}
+
+/* A length the scene may hold: LEXER_MIN_LENGTH <= v <= LEXER_MAX_COORD. */
+static inline bool bounds_length_ok(float v)
+{
+  return v >= LEXER_MIN_LENGTH && v <= LEXER_MAX_COORD;
+}
 
 /* sin of the angle between a and b, computed in double. */
 double bounds_sin_angle(vec3s a, vec3s b);

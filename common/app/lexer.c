@@ -304,18 +304,23 @@ bool lexer_int(Lexer *lx, const char *what, int lo, int hi, int *out)
   return true;
 }
 
+bool lexer_name_valid(const char *s, int len, int max_len)
+{
+  bool ok = len >= 1 && len <= max_len && (s[0] == '_' || (s[0] | 32) >= 'a') &&
+            (s[0] | 32) <= 'z';
+  for (int k = 1; ok && k < len; k++)
+    ok = s[k] == '_' || (s[k] >= '0' && s[k] <= '9') ||
+         ((s[k] | 32) >= 'a' && (s[k] | 32) <= 'z');
+  return ok;
+}
+
 bool lexer_name(Lexer *lx, const char *what, int max_len, Token *out)
 {
   char buf[192];
   if (lx->pos >= lx->n)
     return lexer_fail(lx, lx->end_col, "expected %s, found end of line", what);
   const Token *t = &lx->tok[lx->pos];
-  bool ok = t->len <= max_len && (t->s[0] == '_' || (t->s[0] | 32) >= 'a') &&
-            (t->s[0] | 32) <= 'z';
-  for (int k = 1; ok && k < t->len; k++)
-    ok = t->s[k] == '_' || (t->s[k] >= '0' && t->s[k] <= '9') ||
-         ((t->s[k] | 32) >= 'a' && (t->s[k] | 32) <= 'z');
-  if (!ok)
+  if (!lexer_name_valid(t->s, t->len, max_len))
     return lexer_fail(lx, t->col, "expected %s (letters, digits, '_', at most %d "
                       "characters), found %s", what, max_len, found(lx, buf, sizeof buf));
   *out = *t;

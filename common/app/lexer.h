@@ -76,6 +76,8 @@ bool lexer_colour(Lexer *lx, const char *what, float max, vec3s *out);
 bool lexer_int(Lexer *lx, const char *what, int lo, int hi, int *out);
 /* A name (letter or '_', then letters, digits, '_'), as a token of the text. */
 bool lexer_name(Lexer *lx, const char *what, int max_len, Token *out);
+/* Whether the `len` bytes at s make a name of at most max_len bytes. */
+bool lexer_name_valid(const char *s, int len, int max_len);
 bool lexer_expect_end(Lexer *lx);
 
 #endif

@@ -40,9 +40,11 @@ static NumberStatus slow(const char *s, int len, float *out)
 }
 
 /* [sign] digits [. digits] [e [sign] digits] with at most 19 significant
- * digits: *m the digits as an integer, *e10 the power of ten to apply. False
- * for anything else (hex, inf, nan, longer mantissas, stray bytes). */
-static bool decimal(const char *s, const char *end, bool *neg, uint64_t *m, int *e10)
+ * digits, read from s up to the first byte that does not continue it (at
+ * most to end): *m the digits as an integer, *e10 the power of ten to apply.
+ * Returns where the reading stopped, NULL for no such decimal there (no
+ * digit, more than 19 significant digits, an exponent with no digit). */
+static const char *decimal(const char *s, const char *end, bool *neg, uint64_t *m, int *e10)
 {
   int digits = 0, seen = 0, exp = 0;
   *neg = s < end && *s == '-';
@@ -62,23 +64,23 @@ static bool decimal(const char *s, const char *end, bool *neg, uint64_t *m, int 
       continue;
     }
     if (++digits > 19)
-      return false;
+      return NULL;
     *m = *m * 10 + (uint64_t)(*s - '0');
     *e10 -= frac;
   }
   if (seen == 0)
-    return false;
+    return NULL;
   if (s < end && (*s == 'e' || *s == 'E')) {
     s++;
     bool eneg = s < end && *s == '-';
     s += s < end && (*s == '-' || *s == '+');
-    if (s == end)
-      return false;
+    if (s == end || *s < '0' || *s > '9')
+      return NULL;
     for (; s < end && *s >= '0' && *s <= '9'; s++)
       exp = exp < 100000 ? 10 * exp + (*s - '0') : exp;
     *e10 += eneg ? -exp : exp;
   }
-  return s == end;
+  return s;
 }
 
 /* 10^-k rounded to double (a multiplication instead of a division: 4
@@ -98,26 +100,42 @@ enum { NEAR_MIDPOINT = 4 };
  * double and the true value, which takes the double within 2 ulps of that
  * midpoint (its 29 bits below a float's near 0x10000000): those words, and
  * results outside the normal float range, go to strtof. */
-NumberStatus number_parse(const char *s, int len, float *out)
+/* The float of a decimal; false where it must go to strtof. */
+static bool convert(bool neg, uint64_t m, int e10, float *out)
 {
-  bool neg;
-  uint64_t m;
-  int e10;
-  if (!decimal(s, s + len, &neg, &m, &e10))
-    return slow(s, len, out);
   if (m == 0) {
     *out = neg ? -0.0f : 0.0f;
-    return NUMBER_OK;
+    return true;
   }
   if (m >= (1ull << 53) || e10 < -22 || e10 > 22)
-    return slow(s, len, out);
+    return false;
   double r = (double)m * (e10 >= 0 ? POW10[e10] : INV10[-e10]);
   uint64_t bits;
   memcpy(&bits, &r, sizeof bits);
   uint64_t below = bits & 0x1fffffffu; /* the 29 bits below a float's */
   bool halfway = below - (0x10000000u - NEAR_MIDPOINT) <= 2 * NEAR_MIDPOINT;
   if (halfway || r < (double)FLT_MIN || r >= (double)FLT_MAX)
-    return slow(s, len, out);
+    return false;
   *out = neg ? -(float)r : (float)r;
-  return NUMBER_OK;
+  return true;
+}
+
+NumberStatus number_parse(const char *s, int len, float *out)
+{
+  bool neg;
+  uint64_t m;
+  int e10;
+  const char *end = s + len;
+  if (decimal(s, end, &neg, &m, &e10) == end && convert(neg, m, e10, out))
+    return NUMBER_OK;
+  return slow(s, len, out);
+}
+
+const char *number_prefix(const char *s, const char *end, float *out)
+{
+  bool neg;
+  uint64_t m;
+  int e10;
+  const char *stop = decimal(s, end, &neg, &m, &e10);
+  return stop && convert(neg, m, e10, out) ? stop : NULL;
 }

@@ -15,4 +15,11 @@ typedef enum NumberStatus {
  * same text: *out is bit for bit strtof's result whenever NUMBER_OK. */
 NumberStatus number_parse(const char *s, int len, float *out);
 
+/* The plain decimal at s (read at most to end), when number_parse would read
+ * it without strtof: returns where it stops (the first byte that does not
+ * continue it), with *out the float number_parse gives for the bytes before
+ * that; NULL otherwise (no decimal there, or one number_parse hands to
+ * strtof). For the parser's fast path (common/app/parser.c, sphere_line). */
+const char *number_prefix(const char *s, const char *end, float *out);
+
 #endif

@@ -56,6 +56,11 @@ bool parser_pending_add(Parser *p, int instance, int line, int col, const char *
  * (q's shapes appended after p's); false when out of memory. */
 bool parser_pending_merge(Parser *p, const Parser *q, int first_instance);
 
+/* Whether parser_statements reads the common sphere line straight from the
+ * text (common/app/parser.c, sphere_line; true). The tests turn it off to
+ * compare with the general path. */
+extern bool parser_fast_lines;
+
 /* Resolve p->pending; false (printed) at the first undefined name. */
 bool parser_resolve(Parser *p);
 
