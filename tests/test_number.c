@@ -168,3 +168,56 @@ Test(number, reads_only_the_bytes_it_is_given)
             "\"0x1p3zzz\" (a hex float, read by strtof from a copy)");
   CHECK_NEAR(&c, 8.0, v, 0.0, "\"0x1p3\": value");
 }
+
+/* number_prefix, as the parser's fast path calls it: on the scene text, which
+ * goes on after the word. Each random word is followed by a byte that ends
+ * it (a space, a newline, '#') or may continue it ('.', 'e', a digit,
+ * 'x'), then 20 more bytes; where number_prefix reads a number, it must be
+ * number_parse's float for the bytes it read, and it must stop at the end of
+ * a word the next byte ends. Plain decimals of fewer than 8 digits on each
+ * side of the point, as scenes write them (%g, %.6f), must be read. */
+Test(number, prefix_reads_as_number_parse_up_to_where_it_stops, .timeout = 60)
+{
+  Check c = CHECK("number_prefix", DOC);
+  uint64_t s = 0x5851F42D4C957F2Dull;
+  static const char after[] = " \n#.e5x";
+  static const char *const odd[] = {".", "-", "+", "-.", "5.", ".5", "0.", "-0", "00000001.5",
+                                    "1234567.1234567", "12345678", "1.12345678", "7e", "1.5e3"};
+  const int n_odd = (int)(sizeof odd / sizeof *odd);
+  for (int k = 0; k < 300000 + n_odd; k++) {
+    char word[64], text[128];
+    bool plain = k >= n_odd && k % 2;
+    if (k < n_odd) {
+      snprintf(word, sizeof word, "%s", odd[k]);
+    } else if (plain) {
+      double v = (double)(next(&s) % 20000001) / 1000.0 - 10000.0;
+      snprintf(word, sizeof word, k % 4 == 1 ? "%g" : "%.6f", v / pow(10.0, (double)(next(&s) % 4)));
+    } else {
+      random_word(&s, word, sizeof word);
+    }
+    int len = (int)strlen(word);
+    char end = after[next(&s) % (sizeof after - 1)];
+    memcpy(text, word, (size_t)len);
+    text[len] = end;
+    for (int j = 1; j <= 20; j++)
+      text[len + j] = (char)(' ' + next(&s) % 95);
+    float got = 0.0f, want = 0.0f;
+    const char *stop = number_prefix(text, text + len + 21, &got);
+    bool ends = end == ' ' || end == '\n' || end == '#';
+    if (!stop) {
+      CHECK_THAT(&c, !(plain && ends), "'%s' then '%c': expected a number read, got none",
+                 word, end);
+      continue;
+    }
+    NumberStatus st = number_parse(text, (int)(stop - text), &want);
+    uint32_t wb, gb;
+    memcpy(&wb, &want, 4);
+    memcpy(&gb, &got, 4);
+    CHECK_THAT(&c, st == NUMBER_OK && wb == gb && (!ends || stop == text + len),
+               "'%s' then '%c': read %d bytes as %.9g (bits 0x%08x); expected %s%d bytes, "
+               "number_parse's float for them %.9g (bits 0x%08x, status %d)", word, end,
+               (int)(stop - text), (double)got, gb, ends ? "" : "up to ", len, (double)want,
+               wb, (int)st);
+  }
+  CHECK_DONE(&c);
+}
