@@ -308,9 +308,10 @@ static int sphere_line(Parser *p)
   if (!word_then_space(s, end, "radius", 6) || !(s = number_then_space(s + 7, end, &v[3])) ||
       !bounds_length_ok(v[3]) || !word_then_space(s, end, "material", 8))
     return 0;
-  const char *name = s + 9;
-  for (s = name; s < end && *s != '\n' && *s != ' ' && s - name < LEXER_TOKEN_MAX; s++)
-    continue;
+  s += 9;
+  const char *name = s;
+  while (s < end && *s != '\n' && *s != ' ' && s - name < LEXER_TOKEN_MAX)
+    s++;
   if ((s < end && *s != '\n') || !lexer_name_valid(name, (int)(s - name), MATERIAL_NAME_MAX - 1))
     return 0;
   lx->line++;
