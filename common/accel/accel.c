@@ -9,6 +9,7 @@
 
 #include <limits.h>
 #include <math.h>
+#include <omp.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -235,20 +236,13 @@ static Box sphere_box(const Sphere *s)
   return b;
 }
 
-/* The hierarchy over the spheres ids[0 .. n): one leaf of all of them when
- * `flat`, else binned SAH with leaves of at most LEAF_MAX. Leaves list their
- * spheres in instance order. */
-static bool build_tree(Accel *acc, const Scene *scene, const int *ids, int n, bool flat)
+/* The hierarchy over the n spheres whose instance indices are ids[] and
+ * boxes boxes[]: one leaf of all of them when `flat`, else binned SAH with
+ * leaves of at most LEAF_MAX. Leaves list their spheres in instance order. */
+static bool build_tree(Accel *acc, const int *ids, Box *boxes, int n, bool flat)
 {
-  Box *boxes = malloc((size_t)n * sizeof *boxes);
   Bvh bvh = {0};
-  bool ok = boxes != NULL;
-#pragma omp parallel for schedule(static) if (ok && n > 65536)
-  for (int k = 0; k < (ok ? n : 0); k++)
-    boxes[k] = sphere_box(&scene->instances[ids[k]].sphere);
-  ok = ok && bvh_build(&bvh, boxes, n, flat ? n : LEAF_MAX);
-  free(boxes);
-  if (!ok)
+  if (!bvh_build(&bvh, boxes, n, flat ? n : LEAF_MAX))
     return false;
   acc->spheres = bvh.order; /* leaf order, as indices into ids: map them */
 #pragma omp parallel for schedule(static) if (n > 65536)
@@ -256,6 +250,58 @@ static bool build_tree(Accel *acc, const Scene *scene, const int *ids, int n, bo
     acc->spheres[k] = ids[acc->spheres[k]];
   acc->nodes = bvh.nodes;
   return true;
+}
+
+enum { BLOCKS_MAX = 256 }; /* blocks of instances sorted at once */
+
+static bool lit_sphere(const Scene *scene, int k)
+{
+  return k < scene->n_shapes && scene->instances[k].shape == SHAPE_SPHERE;
+}
+
+/* The lit spheres into ids[] (instance order) with their boxes, everything
+ * else into acc->others (instance order, so the lit ones first); returns the
+ * spheres' count. Large scenes in blocks, one per thread: each block counted,
+ * then filled at its place, so the lists are the same for any thread count
+ * (with the boxes, each instance's cache line is read twice, not three
+ * times, and the sort no longer takes one thread: docs/reliability.md,
+ * "Fourth pass"). */
+static int sort_instances(const Scene *scene, Accel *acc, int *ids, Box *boxes)
+{
+  int n = scene->n_instances, threads = omp_get_max_threads();
+  int blocks = n > 65536 ? (threads < BLOCKS_MAX ? threads : BLOCKS_MAX) : 1;
+  int first[BLOCKS_MAX + 1], spheres[BLOCKS_MAX + 1];
+  for (int b = 0; b <= blocks; b++)
+    first[b] = (int)((long long)n * b / blocks);
+#pragma omp parallel for schedule(static, 1) if (blocks > 1)
+  for (int b = 0; b < blocks; b++) {
+    int count = 0;
+    for (int k = first[b]; k < first[b + 1]; k++)
+      count += lit_sphere(scene, k);
+    spheres[b] = count;
+  }
+  int sum = 0;
+  for (int b = 0; b < blocks; b++) { /* spheres[b]: where block b's go */
+    int count = spheres[b];
+    spheres[b] = sum;
+    sum += count;
+  }
+#pragma omp parallel for schedule(static, 1) if (blocks > 1)
+  for (int b = 0; b < blocks; b++) {
+    int s = spheres[b], o = first[b] - spheres[b];
+    for (int k = first[b]; k < first[b + 1]; k++) {
+      if (lit_sphere(scene, k)) {
+        boxes[s] = sphere_box(&scene->instances[k].sphere);
+        ids[s++] = k;
+      } else {
+        acc->others[o++] = k;
+      }
+    }
+  }
+  acc->n_others = n - sum;
+  while (acc->n_others_lit < acc->n_others && acc->others[acc->n_others_lit] < scene->n_shapes)
+    acc->n_others_lit++;
+  return sum;
 }
 
 bool accel_build(Scene *scene)
@@ -268,21 +314,16 @@ bool accel_build(Scene *scene)
   if (layout == 0)
     return true;
   Accel *acc = calloc(1, sizeof *acc);
-  int *ids = malloc((size_t)(scene->n_instances + 1) * sizeof *ids);
+  size_t room = (size_t)scene->n_instances + 1;
+  int *ids = malloc(room * sizeof *ids);
+  Box *boxes = malloc(room * sizeof *boxes); /* pages past the spheres' stay untouched */
   if (acc)
-    acc->others = malloc((size_t)(scene->n_instances + 1) * sizeof *acc->others);
-  bool ok = acc && ids && acc->others;
-  int n = 0;
-  for (int k = 0; ok && k < scene->n_instances; k++) {
-    if (k < scene->n_shapes && scene->instances[k].shape == SHAPE_SPHERE)
-      ids[n++] = k;
-    else
-      acc->others[acc->n_others++] = k;
-    if (k < scene->n_shapes)
-      acc->n_others_lit = acc->n_others;
-  }
+    acc->others = malloc(room * sizeof *acc->others);
+  bool ok = acc && ids && boxes && acc->others;
+  int n = ok ? sort_instances(scene, acc, ids, boxes) : 0;
   if (ok && n > 0)
-    ok = build_tree(acc, scene, ids, n, layout == 1 || (layout < 0 && n <= ACCEL_FLAT_MAX));
+    ok = build_tree(acc, ids, boxes, n, layout == 1 || (layout < 0 && n <= ACCEL_FLAT_MAX));
+  free(boxes);
   if (ok && layout < 0 && n <= ACCEL_FLAT_MAX)
     acc->cones = cones_build(scene, ids, n); /* NULL: the rays go to the leaf */
   free(ids);

@@ -75,8 +75,9 @@ static bool merge_once(Piece *to, const Piece *q)
 }
 
 /* Append piece q to piece 0: materials (each name new), lights, shapes
- * (their material indices moved past piece 0's), references left to
- * resolve. False on a conflict or out of memory. */
+ * (their material indices moved past piece 0's), references to materials
+ * not defined in q before them (resolved when piece 0 now has the material,
+ * else left to resolve). False on a conflict or out of memory. */
 static bool merge(Piece *to, const Piece *q)
 {
   Scene *s = &to->scene;

@@ -52,8 +52,10 @@ bool parser_statements(Parser *p);
  * memory. */
 bool parser_pending_add(Parser *p, int instance, int line, int col, const char *name, int len);
 
-/* Append q's references after p's, their instances moved by `first_instance`
- * (q's shapes appended after p's); false when out of memory. */
+/* q's references, their instances moved by `first_instance` (q's shapes
+ * appended after p's, and q's materials added to p's): those to a material p
+ * has are resolved now, the others appended after p's; false when out of
+ * memory. */
 bool parser_pending_merge(Parser *p, const Parser *q, int first_instance);
 
 /* Whether parser_statements reads the common sphere line straight from the
