@@ -51,6 +51,14 @@ static bool same_scene(const Scene *a, const Scene *b)
          same_instances(a->instances, b->instances, a->n_instances);
 }
 
+/* Two parses agree: both fail with the same message, or both build the same
+ * scene (and print nothing different). */
+static bool same_parse(bool ok_a, const char *err_a, const Scene *a, bool ok_b,
+                       const char *err_b, const Scene *b)
+{
+  return ok_a == ok_b && strcmp(err_a, err_b) == 0 && (!ok_a || same_scene(a, b));
+}
+
 /* What parser_load_chunks prints and builds for `text` in `chunks` pieces. */
 static bool parse_in_pieces(const char *text, size_t len, int chunks, Scene *s, char *err,
                             size_t size)
@@ -92,8 +100,7 @@ Test(parse_pieces, pieces_in_parallel_parse_as_the_whole)
       bool ok = parse_in_pieces(text, len, 1, &whole, whole_err, sizeof whole_err);
       for (int chunks = 2; chunks <= 9; chunks++) {
         bool ok_p = parse_in_pieces(text, len, chunks, &pieces, piece_err, sizeof piece_err);
-        CHECK_THAT(&c, ok == ok_p && strcmp(whole_err, piece_err) == 0 &&
-                   (!ok || same_scene(&whole, &pieces)),
+        CHECK_THAT(&c, same_parse(ok, whole_err, &whole, ok_p, piece_err, &pieces),
                    "%.100s in %d pieces: expected %s%.200s, got %s%.200s", path, chunks,
                    ok ? "the whole parse's scene" : "the whole parse's error: ", whole_err,
                    ok_p ? (ok ? "a different scene" : "a scene") : "", piece_err);
@@ -138,8 +145,7 @@ static void forward_references(Check *c, bool undefined)
                whole.instances[k].material);
   for (int chunks = 2; chunks <= 9; chunks++) {
     bool ok_p = parse_in_pieces(text, len, chunks, &pieces, piece_err, sizeof piece_err);
-    CHECK_THAT(c, ok == ok_p && strcmp(whole_err, piece_err) == 0 &&
-               (!ok || same_scene(&whole, &pieces)),
+    CHECK_THAT(c, same_parse(ok, whole_err, &whole, ok_p, piece_err, &pieces),
                "forward references in %d pieces: expected %s%.200s, got %s%.200s", chunks,
                ok ? "the whole parse's scene" : "the whole parse's error: ", whole_err,
                ok_p ? (ok ? "a different scene" : "a scene") : "", piece_err);
@@ -289,7 +295,7 @@ Test(parse_pieces, sphere_lines_read_fast_parse_as_the_general_path, .timeout = 
 {
   Check c = CHECK("parser_statements", "docs/reliability.md, \"Fourth pass\"");
   uint64_t s = 0x243F6A8885A308D3ull;
-  int fast = 0;
+  int good = 0;
   for (int k = 0; k < 20000; k++) {
     char line[512], text[1024];
     size_t n = sphere_variant(&s, line, sizeof line);
@@ -305,8 +311,8 @@ Test(parse_pieces, sphere_lines_read_fast_parse_as_the_general_path, .timeout = 
     bool ok_f = parse_in_pieces(text, len, 1, &a, err_f, sizeof err_f);
     parser_fast_lines = false;
     bool ok_g = parse_in_pieces(text, len, 1, &b, err_g, sizeof err_g);
-    fast += ok_g;
-    CHECK_THAT(&c, ok_f == ok_g && strcmp(err_f, err_g) == 0 && (!ok_g || same_scene(&a, &b)),
+    good += ok_g;
+    CHECK_THAT(&c, same_parse(ok_g, err_g, &b, ok_f, err_f, &a),
                "the line '%.*s'%s:\n  expected (general path) %s%.200s\n  got (fast path)  "
                "    %s%.200s", (int)n, line, newline ? " and a newline" : "",
                ok_g ? "a scene" : "the error ", err_g,
@@ -317,7 +323,7 @@ Test(parse_pieces, sphere_lines_read_fast_parse_as_the_general_path, .timeout = 
       scene_free(&b);
   }
   parser_fast_lines = true;
-  CHECK_THAT(&c, fast > 5000 && fast < 18000, "expected both good and bad lines among the "
-             "20000, found %d good", fast);
+  CHECK_THAT(&c, good > 5000 && good < 18000, "expected both good and bad lines among the "
+             "20000, found %d good", good);
   CHECK_DONE(&c);
 }

@@ -99,8 +99,7 @@ enum { NEAR_MIDPOINT = 4 };
  * strtof's float unless a midpoint between two floats lies between the
  * double and the true value, which takes the double within 2 ulps of that
  * midpoint (its 29 bits below a float's near 0x10000000): those words, and
- * results outside the normal float range, go to strtof. */
-/* The float of a decimal; false where it must go to strtof. */
+ * results outside the normal float range, go to strtof (false). */
 static bool convert(bool neg, uint64_t m, int e10, float *out)
 {
   if (m == 0) {
