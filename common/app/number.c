@@ -43,33 +43,36 @@ static NumberStatus slow(const char *s, int len, float *out)
  * digits, read from s up to the first byte that does not continue it (at
  * most to end): *m the digits as an integer, *e10 the power of ten to apply.
  * Returns where the reading stopped, NULL for no such decimal there (no
- * digit, more than 19 significant digits, an exponent with no digit). */
+ * digit, more than 19 significant digits, an exponent with no digit). The
+ * digits before and after the point in two plain loops, the value in a
+ * local: leading zeros add nothing to it, and are only counted apart when
+ * there are more than 19 digits in all. */
 static const char *decimal(const char *s, const char *end, bool *neg, uint64_t *m, int *e10)
 {
-  int digits = 0, seen = 0, exp = 0;
   *neg = s < end && *s == '-';
   s += s < end && (*s == '-' || *s == '+');
-  *m = 0;
-  *e10 = 0;
-  for (bool frac = false; s < end; s++) {
-    if (*s == '.' && !frac) {
-      frac = true;
-      continue;
-    }
-    if (*s < '0' || *s > '9')
-      break;
-    seen++;
-    if (*m == 0 && *s == '0') { /* leading zeros only shift the point */
-      *e10 -= frac;
-      continue;
-    }
-    if (++digits > 19)
-      return NULL;
-    *m = *m * 10 + (uint64_t)(*s - '0');
-    *e10 -= frac;
+  const char *first = s;
+  uint64_t v = 0;
+  while (s < end && (unsigned)(*s - '0') < 10u)
+    v = v * 10 + (uint64_t)(*s++ - '0');
+  int digits = (int)(s - first), frac = 0;
+  if (s < end && *s == '.') {
+    const char *point = s++;
+    while (s < end && (unsigned)(*s - '0') < 10u)
+      v = v * 10 + (uint64_t)(*s++ - '0');
+    frac = (int)(s - point) - 1;
+    digits += frac;
   }
-  if (seen == 0)
+  if (digits == 0)
     return NULL;
+  if (digits > 19) { /* the significant ones: those after the leading zeros */
+    int zeros = 0;
+    for (const char *t = first; t < s && (*t == '0' || *t == '.'); t++)
+      zeros += *t == '0';
+    if (digits - zeros > 19)
+      return NULL;
+  }
+  int exp = 0;
   if (s < end && (*s == 'e' || *s == 'E')) {
     s++;
     bool eneg = s < end && *s == '-';
@@ -78,8 +81,10 @@ static const char *decimal(const char *s, const char *end, bool *neg, uint64_t *
       return NULL;
     for (; s < end && *s >= '0' && *s <= '9'; s++)
       exp = exp < 100000 ? 10 * exp + (*s - '0') : exp;
-    *e10 += eneg ? -exp : exp;
+    exp = eneg ? -exp : exp;
   }
+  *m = v;
+  *e10 = exp - frac;
   return s;
 }
 
