@@ -63,16 +63,17 @@ static bool squeeze(BvhNode **nodes, int n, int *n_nodes)
 }
 
 /* Leaves of a cluster's subtree over `count` boxes (build_cluster's halving
- * down to at most 2 boxes a leaf): the subtree has 2 leaves - 1 nodes. */
-static int cluster_leaves(int count)
+ * down to at most leaf_max boxes a leaf): the subtree has 2 leaves - 1 nodes. */
+static int cluster_leaves(int count, int leaf_max)
 {
-  return count <= 2 ? 1 : cluster_leaves(count / 2) + cluster_leaves(count - count / 2);
+  return count <= leaf_max ? 1 : cluster_leaves(count / 2, leaf_max) +
+                                 cluster_leaves(count - count / 2, leaf_max);
 }
 
 /* The subtree of a cluster (boxes ids[first .. first + count), at most
  * CLUSTER neighbours in Morton order): halved by count down to leaves of
- * one or two boxes (ids in increasing order), its children's slots from
- * `block` on. Cheap, and for so few boxes as good as the heuristic (the
+ * at most b->leaf_max boxes (ids in increasing order), its children's slots
+ * from `block` on. Cheap, and for so few boxes as good as the heuristic (the
  * trees' surface-area costs differ by about 0.1 %). */
 static void build_cluster(SahBuild *b, int node, int first, int count, int block)
 {
@@ -88,12 +89,13 @@ static void build_cluster(SahBuild *b, int node, int first, int count, int block
     nd->lo[a] = box.lo[a];
     nd->hi[a] = box.hi[a];
   }
-  if (count <= 2) {
-    if (count == 2 && b->ids[first] > b->ids[first + 1]) {
-      int id = b->ids[first];
-      b->ids[first] = b->ids[first + 1];
-      b->ids[first + 1] = id;
-    }
+  if (count <= b->leaf_max) { /* the ids in increasing order */
+    for (int i = first + 1; i < first + count; i++)
+      for (int j = i; j > first && b->ids[j - 1] > b->ids[j]; j--) {
+        int id = b->ids[j];
+        b->ids[j] = b->ids[j - 1];
+        b->ids[j - 1] = id;
+      }
     nd->index = first;
     nd->meta = count;
     return;
@@ -105,7 +107,7 @@ static void build_cluster(SahBuild *b, int node, int first, int count, int block
   nd->index = block;
   nd->meta = -1 - axis;
   build_cluster(b, block, first, lc, block + 2);
-  build_cluster(b, block + 1, first + lc, count - lc, block + 2 * cluster_leaves(lc));
+  build_cluster(b, block + 1, first + lc, count - lc, block + 2 * cluster_leaves(lc, b->leaf_max));
 }
 
 /* What the build over the clusters needs, one array each (m entries). */
@@ -153,7 +155,7 @@ static bool build_clustered(SahBuild *b, int n, const uint32_t *sorted, int *n_n
       t.boxes[k] = sah_box_empty();
       for (int j = c.first[k]; j < c.first[k] + c.count[k]; j++)
         sah_box_grow(&t.boxes[k], &b->items[b->ids[j]]);
-      t.weight[k] = cluster_leaves(c.count[k]);
+      t.weight[k] = cluster_leaves(c.count[k], b->leaf_max);
       leaves += t.weight[k];
       t.ids[k] = k;
     }
