@@ -190,10 +190,13 @@ bool bvh_build(Bvh *bvh, Box *boxes, int n, int leaf_max)
   bool ok = b.ids && b.nodes;
   int n_nodes = 0;
   if (ok && n > CLUSTER_FROM && !b.one_leaf && leaf_max >= 2) {
-    uint32_t *codes = malloc((size_t)n * sizeof *codes);
-    ok = codes && morton_sort(boxes, n, b.ids, codes) &&
-         build_clustered(&b, n, codes, &n_nodes);
-    free(codes);
+    /* The node array (64 n bytes), written only once the clusters are cut,
+     * holds the sort's pairs (16 n bytes) and the codes (4 n) until then, so
+     * the nodes land on pages already touched (10^6 spheres: 8 000 fewer
+     * page faults; docs/reliability.md, "Fifth pass"). */
+    uint64_t *scratch = (uint64_t *)(void *)b.nodes;
+    uint32_t *codes = (uint32_t *)(void *)(scratch + 2 * (size_t)n);
+    ok = morton_sort(boxes, n, b.ids, codes, scratch) && build_clustered(&b, n, codes, &n_nodes);
   } else if (ok) {
     for (int k = 0; k < n; k++)
       b.ids[k] = k;

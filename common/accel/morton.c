@@ -80,22 +80,18 @@ static void radix_pass(const uint64_t *in, uint64_t *out, int n, int shift, int 
 }
 
 /* The pairs sorted by code, ties in index order (the index is the low half):
- * three radix passes of 10 bits over the code half. */
-static bool sort_pairs(uint64_t **pair, int n)
+ * three radix passes of 10 bits over the code half, from pair[0 .. n) to
+ * pair[n .. 2n) and back; the result in pair[n .. 2n). */
+static bool sort_pairs(uint64_t *pair, int n)
 {
   int threads = n > 65536 ? omp_get_max_threads() : 1;
-  uint64_t *tmp = malloc((size_t)n * sizeof *tmp);
   int *count = malloc((size_t)threads * BUCKETS * sizeof *count);
-  if (!tmp || !count) {
-    free(tmp);
-    free(count);
+  if (!count)
     return false;
-  }
-  uint64_t *from = *pair, *to = tmp;
 #pragma omp parallel num_threads(threads)
   {
-    const uint64_t *in = from;
-    uint64_t *out = to;
+    const uint64_t *in = pair;
+    uint64_t *out = pair + n;
     for (int shift = 32; shift < 32 + 3 * MORTON_BITS; shift += MORTON_BITS) {
       radix_pass(in, out, n, shift, count);
       const uint64_t *done = out;
@@ -103,8 +99,6 @@ static bool sort_pairs(uint64_t **pair, int n)
       in = done;
     }
   }
-  free(*pair); /* three passes: pair -> tmp -> pair -> tmp */
-  *pair = tmp;
   free(count);
   return true;
 }
@@ -134,15 +128,16 @@ void morton_runs(const uint32_t *sorted, int first, int count, int max, MortonRu
   morton_runs(sorted, mid, first + count - mid, max, c);
 }
 
-bool morton_sort(const Box *items, int n, int *ids, uint32_t *codes)
+bool morton_sort(const Box *items, int n, int *ids, uint32_t *codes, uint64_t *scratch)
 {
-  uint64_t *pair = malloc((size_t)n * sizeof *pair);
-  bool ok = pair && (morton_codes(items, n, pair), sort_pairs(&pair, n));
-#pragma omp parallel for schedule(static) if (ok && n > 65536)
-  for (int k = 0; k < (ok ? n : 0); k++) {
-    ids[k] = (int)(uint32_t)pair[k];
-    codes[k] = (uint32_t)(pair[k] >> 32);
+  morton_codes(items, n, scratch);
+  if (!sort_pairs(scratch, n))
+    return false;
+  const uint64_t *sorted = scratch + n;
+#pragma omp parallel for schedule(static) if (n > 65536)
+  for (int k = 0; k < n; k++) {
+    ids[k] = (int)(uint32_t)sorted[k];
+    codes[k] = (uint32_t)(sorted[k] >> 32);
   }
-  free(pair);
-  return ok;
+  return true;
 }
