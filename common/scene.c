@@ -67,29 +67,6 @@ bool scene_add_instance(Scene *scene, const Instance *inst)
   return true;
 }
 
-bool scene_add_instances(Scene *scene, const Instance *insts, int n, int material_offset)
-{
-  if (!reserve((void **)&scene->instances, scene->n_instances, n, sizeof *insts))
-    return false;
-  Instance *to = scene->instances + scene->n_instances;
-  bool lit = false;
-#pragma omp parallel for schedule(static) if (n > 65536) reduction(|| : lit)
-  for (int k = 0; k < n; k++) {
-    to[k] = insts[k];
-    if (to[k].material >= 0) {
-      to[k].material += material_offset;
-      lit = true;
-    }
-  }
-  scene->n_instances += n;
-  for (int k = n - 1; lit && k >= 0; k--)
-    if (to[k].material >= 0) {
-      scene->n_shapes = scene->n_instances - (n - 1 - k);
-      break;
-    }
-  return true;
-}
-
 int scene_find_material(const Scene *scene, const char *name)
 {
   for (int k = 0; k < scene->n_materials; k++)

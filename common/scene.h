@@ -98,9 +98,6 @@ void scene_free(Scene *scene);
 bool scene_add_material(Scene *scene, const Material *m);
 bool scene_add_light(Scene *scene, const Light *light);
 bool scene_add_instance(Scene *scene, const Instance *inst);
-/* Append n instances at once (as n calls of scene_add_instance would), their
- * material indices moved by material_offset (those >= 0). */
-bool scene_add_instances(Scene *scene, const Instance *insts, int n, int material_offset);
 
 /* Get the scene ready for a step that handles `features` (SceneFeature bits):
  * drop what it cannot render (recorded in info.ignored), order the instances,

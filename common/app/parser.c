@@ -217,18 +217,26 @@ bool parser_pending_merge(Parser *p, const Parser *q, int first_instance)
 }
 
 /* Add a lit instance whose material is the name token `name`; a material
- * not defined yet is resolved at the end. */
+ * not defined yet is resolved at the end. A piece writes in place, and fails
+ * (silently: the whole text is then parsed again) should it find more shapes
+ * than its room, one a line. */
 static bool add_shape(Parser *p, Instance *inst, const Token *name)
 {
+  Scene *s = p->scene;
   inst->material = names_find(&p->names, materials(p), name->s, name->len);
   inst->light = -1;
   if (inst->material < 0) {
     inst->material = 0;
-    if (!parser_pending_add(p, p->scene->n_instances, p->lx.line, name->col, name->s,
-                            name->len))
+    if (!parser_pending_add(p, s->n_instances, p->lx.line, name->col, name->s, name->len))
       return false;
   }
-  return scene_add_instance(p->scene, inst);
+  if (p->room == 0)
+    return scene_add_instance(s, inst);
+  if (s->n_instances == p->room)
+    return false;
+  s->instances[s->n_instances++] = *inst;
+  s->n_shapes = s->n_instances;
+  return true;
 }
 
 static bool st_sphere(Parser *p)

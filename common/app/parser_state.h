@@ -34,6 +34,9 @@ typedef struct Parser {
   int n_forward;
   Names forward_names;  /* name -> index into forward */
   int once_line[ONCE_COUNT]; /* where each once-statement was, 0: not yet */
+  int room; /* 0: shapes go to the scene's growing array; > 0: a piece of a
+             * large text (parser_load.c), whose shapes go in place to
+             * scene->instances[0 .. room), an array it does not own */
 } Parser;
 
 /* The scene's materials as records of the names table. */
