@@ -224,25 +224,20 @@ static int layout_wanted(void)
        : strcmp(env, "bvh") == 0  ? 2 : -1;
 }
 
-/* A sphere's box, padded (sphere_pad, accel/cones.h). */
-static Box sphere_box(const Sphere *s)
+/* A sphere's ball: its centre, and its radius padded (sphere_pad,
+ * accel/cones.h) as the half width of its cube. */
+static Ball sphere_ball(const Sphere *s)
 {
-  float pad = sphere_pad(s);
-  Box b = {{0.0f, 0.0f, 0.0f, 0.0f}, {0.0f, 0.0f, 0.0f, 0.0f}};
-  for (int a = 0; a < 3; a++) {
-    b.lo[a] = s->center.raw[a] - s->radius - pad;
-    b.hi[a] = s->center.raw[a] + s->radius + pad;
-  }
-  return b;
+  return (Ball){s->center.x, s->center.y, s->center.z, s->radius + sphere_pad(s)};
 }
 
 /* The hierarchy over the n spheres whose instance indices are ids[] and
- * boxes boxes[]: one leaf of all of them when `flat`, else binned SAH with
+ * balls balls[]: one leaf of all of them when `flat`, else binned SAH with
  * leaves of at most LEAF_MAX. Leaves list their spheres in instance order. */
-static bool build_tree(Accel *acc, const int *ids, Box *boxes, int n, bool flat)
+static bool build_tree(Accel *acc, const int *ids, const Ball *balls, int n, bool flat)
 {
   Bvh bvh = {0};
-  if (!bvh_build(&bvh, boxes, n, flat ? n : LEAF_MAX))
+  if (!bvh_build(&bvh, balls, n, flat ? n : LEAF_MAX))
     return false;
   acc->spheres = bvh.order; /* leaf order, as indices into ids: map them */
 #pragma omp parallel for schedule(static) if (n > 65536)
@@ -259,14 +254,14 @@ static bool lit_sphere(const Scene *scene, int k)
   return k < scene->n_shapes && scene->instances[k].shape == SHAPE_SPHERE;
 }
 
-/* The lit spheres into ids[] (instance order) with their boxes, everything
+/* The lit spheres into ids[] (instance order) with their balls, everything
  * else into acc->others (instance order, so the lit ones first); returns the
  * spheres' count. Large scenes in blocks, one per thread: each block counted,
  * then filled at its place, so the lists are the same for any thread count
- * (with the boxes, each instance's cache line is read twice, not three
+ * (with the balls, each instance's cache line is read twice, not three
  * times, and the sort no longer takes one thread: docs/reliability.md,
  * "Fourth pass"). */
-static int sort_instances(const Scene *scene, Accel *acc, int *ids, Box *boxes)
+static int sort_instances(const Scene *scene, Accel *acc, int *ids, Ball *balls)
 {
   int n = scene->n_instances, threads = omp_get_max_threads();
   int blocks = n > 65536 ? (threads < BLOCKS_MAX ? threads : BLOCKS_MAX) : 1;
@@ -291,7 +286,7 @@ static int sort_instances(const Scene *scene, Accel *acc, int *ids, Box *boxes)
     int s = spheres[b], o = first[b] - spheres[b];
     for (int k = first[b]; k < first[b + 1]; k++) {
       if (lit_sphere(scene, k)) {
-        boxes[s] = sphere_box(&scene->instances[k].sphere);
+        balls[s] = sphere_ball(&scene->instances[k].sphere);
         ids[s++] = k;
       } else {
         acc->others[o++] = k;
@@ -316,14 +311,14 @@ bool accel_build(Scene *scene)
   Accel *acc = calloc(1, sizeof *acc);
   size_t room = (size_t)scene->n_instances + 1;
   int *ids = malloc(room * sizeof *ids);
-  Box *boxes = malloc(room * sizeof *boxes); /* pages past the spheres' stay untouched */
+  Ball *balls = malloc(room * sizeof *balls); /* pages past the spheres' stay untouched */
   if (acc)
     acc->others = malloc(room * sizeof *acc->others);
-  bool ok = acc && ids && boxes && acc->others;
-  int n = ok ? sort_instances(scene, acc, ids, boxes) : 0;
+  bool ok = acc && ids && balls && acc->others;
+  int n = ok ? sort_instances(scene, acc, ids, balls) : 0;
   if (ok && n > 0)
-    ok = build_tree(acc, ids, boxes, n, layout == 1 || (layout < 0 && n <= ACCEL_FLAT_MAX));
-  free(boxes);
+    ok = build_tree(acc, ids, balls, n, layout == 1 || (layout < 0 && n <= ACCEL_FLAT_MAX));
+  free(balls);
   if (ok && layout < 0 && n <= ACCEL_FLAT_MAX)
     acc->cones = cones_build(scene, ids, n); /* NULL: the rays go to the leaf */
   free(ids);

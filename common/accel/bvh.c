@@ -75,13 +75,13 @@ static int cluster_leaves(int count, int leaf_max)
  * at most b->leaf_max boxes (ids in increasing order), its children's slots
  * from `block` on. Cheap, and for so few boxes as good as the heuristic (the
  * trees' surface-area costs differ by about 0.1 %). */
-static void build_cluster(SahBuild *b, int node, int first, int count, int block)
+static void build_cluster(SahBuild *b, const Ball *balls, int node, int first, int count,
+                          int block)
 {
   Box box = sah_box_empty(), cb = sah_box_empty();
   for (int k = first; k < first + count; k++) {
-    const Box *it = &b->items[b->ids[k]];
-    Box c = {it->lo + it->hi, it->lo + it->hi};
-    sah_box_grow(&box, it);
+    Box it = ball_box(balls[b->ids[k]]), c = {balls[b->ids[k]], balls[b->ids[k]]};
+    sah_box_grow(&box, &it);
     sah_box_grow(&cb, &c);
   }
   BvhNode *nd = &b->nodes[node];
@@ -106,8 +106,9 @@ static void build_cluster(SahBuild *b, int node, int first, int count, int block
       axis = a;
   nd->index = block;
   nd->meta = -1 - axis;
-  build_cluster(b, block, first, lc, block + 2);
-  build_cluster(b, block + 1, first + lc, count - lc, block + 2 * cluster_leaves(lc, b->leaf_max));
+  build_cluster(b, balls, block, first, lc, block + 2);
+  build_cluster(b, balls, block + 1, first + lc, count - lc,
+                block + 2 * cluster_leaves(lc, b->leaf_max));
 }
 
 /* What the build over the clusters needs, one array each (m entries). */
@@ -135,11 +136,12 @@ static void top_free(Top *t)
   free(t->leaf_block);
 }
 
-/* The tree over the clusters of the boxes in Morton order (b->ids, codes
- * `sorted`), then each cluster's subtree over its boxes; *n_nodes the nodes
+/* The tree over the clusters of the balls in Morton order (b->ids, codes
+ * `sorted`), then each cluster's subtree over its balls; *n_nodes the nodes
  * used. A cluster weighs its subtree's leaves, which sizes its block. The
- * boxes stay where they are: leaves index b->ids. */
-static bool build_clustered(SahBuild *b, int n, const uint32_t *sorted, int *n_nodes)
+ * balls stay where they are: leaves index b->ids. */
+static bool build_clustered(SahBuild *b, const Ball *balls, int n, const uint32_t *sorted,
+                            int *n_nodes)
 {
   int leaves = 0;
   MortonRuns c = {malloc((size_t)n * sizeof(int)), malloc((size_t)n * sizeof(int)), 0};
@@ -153,8 +155,10 @@ static bool build_clustered(SahBuild *b, int n, const uint32_t *sorted, int *n_n
 #pragma omp parallel for schedule(static) reduction(+ : leaves)
     for (int k = 0; k < c.n; k++) {
       t.boxes[k] = sah_box_empty();
-      for (int j = c.first[k]; j < c.first[k] + c.count[k]; j++)
-        sah_box_grow(&t.boxes[k], &b->items[b->ids[j]]);
+      for (int j = c.first[k]; j < c.first[k] + c.count[k]; j++) {
+        Box it = ball_box(balls[b->ids[j]]);
+        sah_box_grow(&t.boxes[k], &it);
+      }
       t.weight[k] = cluster_leaves(c.count[k], b->leaf_max);
       leaves += t.weight[k];
       t.ids[k] = k;
@@ -166,7 +170,8 @@ static bool build_clustered(SahBuild *b, int n, const uint32_t *sorted, int *n_n
     sah_build_node(&top, 0, 0, c.n, 0, 1);
 #pragma omp parallel for schedule(dynamic, 256)
     for (int p = 0; p < c.n; p++)
-      build_cluster(b, t.leaf_node[p], c.first[t.ids[p]], c.count[t.ids[p]], t.leaf_block[p]);
+      build_cluster(b, balls, t.leaf_node[p], c.first[t.ids[p]], c.count[t.ids[p]],
+                    t.leaf_block[p]);
   }
   free(c.first);
   free(c.count);
@@ -181,9 +186,9 @@ static int compare_int(const void *a, const void *b)
   return (x > y) - (x < y);
 }
 
-bool bvh_build(Bvh *bvh, Box *boxes, int n, int leaf_max)
+bool bvh_build(Bvh *bvh, const Ball *balls, int n, int leaf_max)
 {
-  SahBuild b = {.items = boxes, .leaf_max = leaf_max, .one_leaf = leaf_max >= n};
+  SahBuild b = {.leaf_max = leaf_max, .one_leaf = leaf_max >= n};
   b.ids = malloc((size_t)n * sizeof *b.ids);
   b.nodes = malloc((size_t)(2 * n - 1) * sizeof *b.nodes);
   *bvh = (Bvh){0};
@@ -196,20 +201,26 @@ bool bvh_build(Bvh *bvh, Box *boxes, int n, int leaf_max)
      * page faults; docs/reliability.md, "Fifth pass"). */
     uint64_t *scratch = (uint64_t *)(void *)b.nodes;
     uint32_t *codes = (uint32_t *)(void *)(scratch + 2 * (size_t)n);
-    ok = morton_sort(boxes, n, b.ids, codes, scratch) && build_clustered(&b, n, codes, &n_nodes);
-  } else if (ok) {
-    for (int k = 0; k < n; k++)
+    ok = morton_sort(balls, n, b.ids, codes, scratch) &&
+         build_clustered(&b, balls, n, codes, &n_nodes);
+  } else if (ok) { /* the heuristic moves its items: boxes of its own */
+    ok = (b.items = malloc((size_t)n * sizeof *b.items)) != NULL;
+    for (int k = 0; ok && k < n; k++) {
+      b.items[k] = ball_box(balls[k]);
       b.ids[k] = k;
-#pragma omp parallel if (n > 8192)
+    }
+#pragma omp parallel if (ok && n > 8192)
 #pragma omp single
-    sah_build_node(&b, 0, 0, n, 0, 1);
-    ok = squeeze(&b.nodes, n, &n_nodes);
+    if (ok)
+      sah_build_node(&b, 0, 0, n, 0, 1);
+    free(b.items);
+    ok = ok && squeeze(&b.nodes, n, &n_nodes);
     for (int k = 0; ok && k < n_nodes; k++)
       if (b.nodes[k].meta > 1)
         qsort(b.ids + b.nodes[k].index, (size_t)b.nodes[k].meta, sizeof(int), compare_int);
   }
   if (!ok) {
-    fprintf(stderr, "bvh: out of memory for %d boxes\n", n);
+    fprintf(stderr, "bvh: out of memory for %d spheres\n", n);
     free(b.nodes);
     free(b.ids);
     return false;

@@ -1,4 +1,4 @@
-/* Morton order of box centres (common/accel/bvh.c's clusters): codes on a
+/* Morton order of ball centres (common/accel/bvh.c's clusters): codes on a
  * cubic grid, a radix sort, runs of neighbours. docs/performance.md. */
 #include "accel/morton.h"
 
@@ -17,9 +17,9 @@ static uint32_t spread3(uint32_t x)
   return (x | x << 2) & 0x09249249u;
 }
 
-/* (code << 32 | k) for each box k: its centre's Morton code on a cubic grid
+/* (code << 32 | k) for each ball k: its centre's Morton code on a cubic grid
  * over the centres' bounds (a flat scene is not cut along its thin axis). */
-static void morton_codes(const Box *items, int n, uint64_t *pair)
+static void morton_codes(const Ball *items, int n, uint64_t *pair)
 {
   Box cb = sah_box_empty();
   float lo0 = cb.lo[0], lo1 = cb.lo[1], lo2 = cb.lo[2];
@@ -27,7 +27,7 @@ static void morton_codes(const Box *items, int n, uint64_t *pair)
 #pragma omp parallel for schedule(static) if (n > 65536) \
     reduction(min : lo0, lo1, lo2) reduction(max : hi0, hi1, hi2)
   for (int k = 0; k < n; k++) {
-    V4 c = items[k].lo + items[k].hi;
+    V4 c = items[k];
     lo0 = c[0] < lo0 ? c[0] : lo0, hi0 = c[0] > hi0 ? c[0] : hi0;
     lo1 = c[1] < lo1 ? c[1] : lo1, hi1 = c[1] > hi1 ? c[1] : hi1;
     lo2 = c[2] < lo2 ? c[2] : lo2, hi2 = c[2] > hi2 ? c[2] : hi2;
@@ -42,7 +42,7 @@ static void morton_codes(const Box *items, int n, uint64_t *pair)
   for (int k = 0; k < n; k++) {
     uint32_t q[3];
     for (int a = 0; a < 3; a++) { /* clamped before the conversion */
-      float x = (items[k].lo[a] + items[k].hi[a] - cb.lo[a]) * scale;
+      float x = (items[k][a] - cb.lo[a]) * scale;
       x = x > 0.0f ? x : 0.0f;
       q[a] = (uint32_t)(x < (float)((1 << MORTON_BITS) - 1) ? x : (1 << MORTON_BITS) - 1);
     }
@@ -128,7 +128,7 @@ void morton_runs(const uint32_t *sorted, int first, int count, int max, MortonRu
   morton_runs(sorted, mid, first + count - mid, max, c);
 }
 
-bool morton_sort(const Box *items, int n, int *ids, uint32_t *codes, uint64_t *scratch)
+bool morton_sort(const Ball *items, int n, int *ids, uint32_t *codes, uint64_t *scratch)
 {
   morton_codes(items, n, scratch);
   if (!sort_pairs(scratch, n))

@@ -9,13 +9,13 @@
 
 #include "accel/bvh_sah.h"
 
-/* ids[0 .. n): the boxes' indices sorted by the Morton code of their
+/* ids[0 .. n): the balls' indices sorted by the Morton code of their
  * centres (on a cubic grid over the centres' bounds, so that a flat scene is
  * not cut along its thin axis), ties in index order; codes[0 .. n): the
  * sorted codes. scratch: room for 2n pairs of (code, index), which the
  * radix sort uses and leaves unspecified (it must not overlap ids or codes).
  * The same for any number of threads. False when out of memory. */
-bool morton_sort(const Box *items, int n, int *ids, uint32_t *codes, uint64_t *scratch);
+bool morton_sort(const Ball *items, int n, int *ids, uint32_t *codes, uint64_t *scratch);
 
 /* Runs of the sorted codes, each of at most `max` boxes. */
 typedef struct MortonRuns {
