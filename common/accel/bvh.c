@@ -1,14 +1,14 @@
 /* BVH build (docs/performance.md): the binned surface area heuristic of
- * common/accel/bvh_sah.c over the boxes. Above CLUSTER_FROM boxes it runs
- * twice: the boxes sorted along a Morton curve are cut into clusters of at
- * most CLUSTER neighbours, the heuristic builds the tree over the clusters,
- * then each cluster's subtree over its own boxes (a tenth of the work of one
- * build over 10^6 boxes, for trees about as good). Large subtrees are OpenMP
- * tasks; the tree is the same for any thread count: each subtree owns a fixed
- * block of nodes. The blocks of one build over all the boxes keep unused
- * slots (where a leaf holds several boxes), squeezed out at the end; a
- * cluster's block is sized by its subtree's leaves, so the clustered build
- * leaves none. */
+ * common/accel/bvh_sah.c over the balls' cubes. Above CLUSTER_FROM balls it
+ * runs twice: the balls sorted along a Morton curve are cut into clusters of
+ * at most CLUSTER neighbours, the heuristic builds the tree over the
+ * clusters, then each cluster's subtree over its own balls (a tenth of the
+ * work of one build over 10^6 balls, for trees about as good). Large
+ * subtrees are OpenMP tasks; the tree is the same for any thread count: each
+ * subtree owns a fixed block of nodes. The blocks of one build over all the
+ * balls keep unused slots (where a leaf holds several), squeezed out at the
+ * end; a cluster's block is sized by its subtree's leaves, so the clustered
+ * build leaves none. */
 #include "accel/bvh.h"
 
 #include <stdint.h>
@@ -20,8 +20,8 @@
 #include "accel/morton.h"
 
 enum {
-  CLUSTER_FROM = 16384, /* fewer boxes: one build over all of them */
-  CLUSTER = 16,         /* most boxes in a cluster */
+  CLUSTER_FROM = 16384, /* fewer balls: one build over all of them */
+  CLUSTER = 16,         /* most balls in a cluster */
 };
 
 /* ---------------------------------------------------------------- the build */
@@ -62,18 +62,18 @@ static bool squeeze(BvhNode **nodes, int n, int *n_nodes)
   return true;
 }
 
-/* Leaves of a cluster's subtree over `count` boxes (build_cluster's halving
- * down to at most leaf_max boxes a leaf): the subtree has 2 leaves - 1 nodes. */
+/* Leaves of a cluster's subtree over `count` balls (build_cluster's halving
+ * down to at most leaf_max balls a leaf): the subtree has 2 leaves - 1 nodes. */
 static int cluster_leaves(int count, int leaf_max)
 {
   return count <= leaf_max ? 1 : cluster_leaves(count / 2, leaf_max) +
                                  cluster_leaves(count - count / 2, leaf_max);
 }
 
-/* The subtree of a cluster (boxes ids[first .. first + count), at most
+/* The subtree of a cluster (balls ids[first .. first + count), at most
  * CLUSTER neighbours in Morton order): halved by count down to leaves of
- * at most b->leaf_max boxes (ids in increasing order), its children's slots
- * from `block` on. Cheap, and for so few boxes as good as the heuristic (the
+ * at most b->leaf_max balls (ids in increasing order), its children's slots
+ * from `block` on. Cheap, and for so few balls as good as the heuristic (the
  * trees' surface-area costs differ by about 0.1 %). */
 static void build_cluster(SahBuild *b, const Ball *balls, int node, int first, int count,
                           int block)

@@ -1,4 +1,4 @@
-/* Morton order: box centres interleaved bit by bit into one code (10 bits an
+/* Morton order: ball centres interleaved bit by bit into one code (10 bits an
  * axis), so that sorting by code puts neighbours in space next to each
  * other. The BVH build's clusters (common/accel/bvh.c); docs/performance.md. */
 #ifndef RT_MORTON_H
@@ -17,14 +17,14 @@
  * The same for any number of threads. False when out of memory. */
 bool morton_sort(const Ball *items, int n, int *ids, uint32_t *codes, uint64_t *scratch);
 
-/* Runs of the sorted codes, each of at most `max` boxes. */
+/* Runs of the sorted codes, each of at most `max` balls. */
 typedef struct MortonRuns {
-  int *first, *count; /* ranges of the sorted boxes */
+  int *first, *count; /* ranges of the sorted balls */
   int n;
 } MortonRuns;
 
 /* Cut sorted codes [first, first + count) at their highest differing bit
- * until each part holds at most `max` boxes (equal codes: by count),
+ * until each part holds at most `max` balls (equal codes: by count),
  * appending the parts to r. */
 void morton_runs(const uint32_t *sorted, int first, int count, int max, MortonRuns *r);
 
