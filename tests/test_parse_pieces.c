@@ -99,11 +99,15 @@ Test(parse_pieces, pieces_in_parallel_parse_as_the_whole)
       Scene whole, pieces;
       bool ok = parse_in_pieces(text, len, 1, &whole, whole_err, sizeof whole_err);
       for (int chunks = 2; chunks <= 9; chunks++) {
+        int reparses = parser_reparses;
         bool ok_p = parse_in_pieces(text, len, chunks, &pieces, piece_err, sizeof piece_err);
         CHECK_THAT(&c, same_parse(ok, whole_err, &whole, ok_p, piece_err, &pieces),
                    "%.100s in %d pieces: expected %s%.200s, got %s%.200s", path, chunks,
                    ok ? "the whole parse's scene" : "the whole parse's error: ", whole_err,
                    ok_p ? (ok ? "a different scene" : "a scene") : "", piece_err);
+        CHECK_THAT(&c, !ok || parser_reparses == reparses,
+                   "%.100s in %d pieces: a valid scene, expected the pieces to parse it "
+                   "(parser_reparses unchanged), got it parsed again whole", path, chunks);
         scene_free(&pieces);
       }
       scene_free(&whole);
@@ -144,11 +148,15 @@ static void forward_references(Check *c, bool undefined)
                "forward references, whole: shape %d: expected material %d, got %d", k, k % 7,
                whole.instances[k].material);
   for (int chunks = 2; chunks <= 9; chunks++) {
+    int reparses = parser_reparses;
     bool ok_p = parse_in_pieces(text, len, chunks, &pieces, piece_err, sizeof piece_err);
     CHECK_THAT(c, same_parse(ok, whole_err, &whole, ok_p, piece_err, &pieces),
                "forward references in %d pieces: expected %s%.200s, got %s%.200s", chunks,
                ok ? "the whole parse's scene" : "the whole parse's error: ", whole_err,
                ok_p ? (ok ? "a different scene" : "a scene") : "", piece_err);
+    CHECK_THAT(c, !ok || parser_reparses == reparses,
+               "forward references in %d pieces: a valid scene, expected the pieces to "
+               "parse it, got it parsed again whole", chunks);
     if (ok_p)
       scene_free(&pieces);
   }
@@ -161,6 +169,36 @@ Test(parse_pieces, forward_references_resolve_as_in_the_whole)
   Check c = CHECK("parser_load_chunks", "docs/reliability.md, \"Second pass\"");
   forward_references(&c, false);
   forward_references(&c, true);
+  CHECK_DONE(&c);
+}
+
+/* Every piece writes its shapes in place, in room for one a line
+ * (docs/reliability.md, "Fifth pass"), the last line counted even without a
+ * newline: a text of shapes only, its last line a shape with no newline,
+ * parses in 2 to 9 pieces as whole, and never again whole. */
+Test(parse_pieces, shapes_fit_their_pieces_room)
+{
+  Check c = CHECK("parser_load_chunks", "docs/reliability.md, \"Fifth pass\"");
+  static char text[1 << 16];
+  size_t len = (size_t)snprintf(text, sizeof text, "material m diffuse 1 1 1\n");
+  for (int k = 0; k < 400; k++)
+    len += (size_t)snprintf(text + len, sizeof text - len, "%ssphere center %d 0 -5 radius 0.5 "
+                            "material m", k ? "\n" : "", k);
+  char whole_err[512], piece_err[512];
+  Scene whole, pieces;
+  cr_assert(parse_in_pieces(text, len, 1, &whole, whole_err, sizeof whole_err), "%s", whole_err);
+  for (int chunks = 2; chunks <= 9; chunks++) {
+    int reparses = parser_reparses;
+    bool ok_p = parse_in_pieces(text, len, chunks, &pieces, piece_err, sizeof piece_err);
+    CHECK_THAT(&c, ok_p && same_scene(&whole, &pieces) && parser_reparses == reparses,
+               "400 shapes, the last line without a newline, in %d pieces: expected the "
+               "whole parse's scene from the pieces, got %s%s", chunks,
+               !ok_p ? "an error" : same_scene(&whole, &pieces) ? "it" : "another scene",
+               parser_reparses == reparses ? "" : " only from parsing again whole");
+    if (ok_p)
+      scene_free(&pieces);
+  }
+  scene_free(&whole);
   CHECK_DONE(&c);
 }
 

@@ -124,15 +124,17 @@ static bool merge(Piece *to, const Piece *q)
 static int count_lines(const char *text, size_t len)
 {
   size_t n = 0;
-  for (size_t k = 0; k < len; k += 255) {
-    size_t m = len - k < 255 ? len - k : 255;
+  for (size_t k = 0; k < len;) {
+    size_t end = len - k < 255 ? len : k + 255;
     unsigned char in_block = 0;
-    for (size_t j = 0; j < m; j++)
-      in_block += text[k + j] == '\n';
+    for (; k < end; k++)
+      in_block += text[k] == '\n';
     n += in_block;
   }
   return (int)n + (len > 0 && text[len - 1] != '\n');
 }
+
+int parser_reparses = 0;
 
 bool parser_load_chunks(const char *file, const char *text, size_t len, Scene *scene,
                         int chunks)
@@ -190,7 +192,11 @@ bool parser_load_chunks(const char *file, const char *text, size_t len, Scene *s
   else
     free(shapes);
   free(piece);
-  return ok || parse_whole(file, text, len, scene);
+  if (ok)
+    return true;
+#pragma omp atomic
+  parser_reparses++;
+  return parse_whole(file, text, len, scene);
 }
 
 bool parser_load_text(const char *file, const char *text, size_t len, Scene *scene)

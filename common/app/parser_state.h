@@ -66,6 +66,12 @@ bool parser_pending_merge(Parser *p, const Parser *q, int first_instance);
  * compare with the general path. */
 extern bool parser_fast_lines;
 
+/* How many times parser_load_chunks has parsed a text again whole after its
+ * pieces failed: on an error, which the whole parse then prints, and never
+ * for a valid scene (the tests check; a miscounted piece's room would show
+ * there and nowhere else, as a parse twice as slow). */
+extern int parser_reparses;
+
 /* Resolve p->pending; false (printed) at the first undefined name. */
 bool parser_resolve(Parser *p);
 
