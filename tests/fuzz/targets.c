@@ -69,16 +69,20 @@ static void same_answers(Scene *s, Ray r)
 
 /* The text parsed in 2 or 3 pieces at once (what a large file gets) must
  * give what the whole parse gave: the same verdict and the same shapes, each
- * with its material (forward references resolved across pieces). */
+ * with its material (forward references resolved across pieces), and a
+ * valid text must come from its pieces, not from parsing it again whole. */
 static void same_in_pieces(const uint8_t *data, size_t size, bool ok, const Scene *whole)
 {
   Scene p;
   scene_init(&p);
+  int reparses = parser_reparses;
   bool ok_p = parser_load_chunks("fuzz.scene", (const char *)data, size, &p, 2 + (int)(size % 2));
   if (ok_p != ok)
     bug("the parse in pieces and the whole parse disagree on the text's validity");
   if (!ok)
     return;
+  if (parser_reparses != reparses)
+    bug("a valid text's pieces failed, and it was parsed again whole (a piece's room?)");
   if (p.n_instances != whole->n_instances || p.n_shapes != whole->n_shapes ||
       p.n_materials != whole->n_materials || p.n_lights != whole->n_lights)
     bug("the parse in pieces counts other shapes, materials or lights");
