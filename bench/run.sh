@@ -303,6 +303,16 @@ if part scaling && have 05-shadows; then
       --threads 2 -o "$B/s.pfm")
     echo "$n,$rm,$rlo,$rhi,$wm,$wlo,$whi" >> "$D/scaling.csv"
   done
+  # The target's ratio from pairs run in turn (10^3 then 10^6), so that a
+  # machine whose speed drifts during the run moves both: docs/reliability.md,
+  # "Fifth pass", saw 3-run medians one after the other give 3.9 to 5.1.
+  log "10^6 against 10^3 spheres, whole process, $RUNS pairs in turn"
+  echo "pair,wall_1000,wall_1000000,ratio" > "$D/ratio6.csv"
+  for k in $(seq "$RUNS"); do
+    read -r _ _ w3 < <(ours 05-shadows --scene "$B/spheres-1000.scene" --threads 2 -o "$B/s.pfm")
+    read -r _ _ w6 < <(ours 05-shadows --scene "$B/spheres-1000000.scene" --threads 2 -o "$B/s.pfm")
+    awk -v k="$k" -v a="$w3" -v b="$w6" 'BEGIN {printf "%d,%s,%s,%.4f\n", k, a, b, b / a}' >> "$D/ratio6.csv"
+  done
   log "layouts: plain loop, one leaf, BVH (step 05, 2 threads)"
   echo "spheres,loop,flat,bvh" > "$D/layout.csv"
   for n in 5 20 100 1000; do
