@@ -112,11 +112,14 @@ step05_all() {
     "$ALL" "$ow" "${pw:-n/a}" "$rw" "$rw"
 }
 w3=$(col "$D/scaling.csv" 1 1000 5); w6=$(col "$D/scaling.csv" 1 1000000 5)
-r6=$(ratio "$w6" "$w3"); r6_how="the scaling table's medians of 3"
+r6=$(ratio "$w6" "$w3"); r6_how="the scaling table's medians of 3"; pairs_note=""
 if [ -s "$D/ratio6.csv" ]; then # pairs in turn (bench/run.sh): their medians
   w3=$(median_col "$D/ratio6.csv" 2); w6=$(median_col "$D/ratio6.csv" 3)
   r6=$(median_col "$D/ratio6.csv" 4 | awk '{printf "%.1fx", $1}')
-  r6_how="the median ratio of $(($(wc -l < "$D/ratio6.csv") - 1)) pairs run in turn (docs/bench/ratio6.csv)"
+  r6_how="the median ratio of $(($(wc -l < "$D/ratio6.csv") - 1)) pairs run in turn ($D/ratio6.csv)"
+  pairs_note="The headline's 10^6 row takes the median ratio of $(($(wc -l < "$D/ratio6.csv") - 1))
+pairs run in turn, 10^3 then 10^6 spheres ($D/ratio6.csv): medians of 3 taken
+one scene after the other move with a machine whose speed drifts during the run."
 fi
 CC_USED=$(readelf -p .comment build/bin/05-shadows 2>/dev/null | sed -n 's/.*GCC: //p' | head -n1)
 all_note="$ALL threads here"
@@ -240,10 +243,7 @@ $(table "$D/trace-off.csv" 2>/dev/null)
 \`bench/gen_spheres N\` writes N spheres on a jittered grid over the same patch
 of floor (radius ~ 1/sqrt(N)), same camera and lights as the canonical scene;
 step 05, 800x600, 2 threads, median of 3. The scene files are in build/bench/.
-The headline's 10^6 row takes, when bench/run.sh wrote it, the median ratio
-of ${BENCH_RUNS:-9} pairs run in turn, 10^3 then 10^6 spheres
-(docs/bench/ratio6.csv): medians of 3 taken one scene after the other move
-with a machine whose speed drifts during the run.
+${pairs_note}
 
 $(table "$D/scaling.csv")
 
