@@ -116,8 +116,9 @@ r6=$(ratio "$w6" "$w3"); r6_how="the scaling table's medians of 3"; pairs_note="
 if [ -s "$D/ratio6.csv" ]; then # pairs in turn (bench/run.sh): their medians
   w3=$(median_col "$D/ratio6.csv" 2); w6=$(median_col "$D/ratio6.csv" 3)
   r6=$(median_col "$D/ratio6.csv" 4 | awk '{printf "%.1fx", $1}')
-  r6_how="the median ratio of $(($(wc -l < "$D/ratio6.csv") - 1)) pairs run in turn ($D/ratio6.csv)"
-  pairs_note="The headline's 10^6 row takes the median ratio of $(($(wc -l < "$D/ratio6.csv") - 1))
+  pairs=$(($(wc -l < "$D/ratio6.csv") - 1))
+  r6_how="the median ratio of $pairs pairs run in turn ($D/ratio6.csv)"
+  pairs_note="The headline's 10^6 row takes the median ratio of $pairs
 pairs run in turn, 10^3 then 10^6 spheres ($D/ratio6.csv): medians of 3 taken
 one scene after the other move with a machine whose speed drifts during the run."
 fi

@@ -80,7 +80,8 @@ static void build_cluster(SahBuild *b, const Ball *balls, int node, int first, i
 {
   Box box = sah_box_empty(), cb = sah_box_empty();
   for (int k = first; k < first + count; k++) {
-    Box it = ball_box(balls[b->ids[k]]), c = {balls[b->ids[k]], balls[b->ids[k]]};
+    Ball ball = balls[b->ids[k]];
+    Box it = ball_box(ball), c = {ball, ball};
     sah_box_grow(&box, &it);
     sah_box_grow(&cb, &c);
   }
@@ -203,21 +204,21 @@ bool bvh_build(Bvh *bvh, const Ball *balls, int n, int leaf_max)
     uint32_t *codes = (uint32_t *)(void *)(scratch + 2 * (size_t)n);
     ok = morton_sort(balls, n, b.ids, codes, scratch) &&
          build_clustered(&b, balls, n, codes, &n_nodes);
-  } else if (ok) { /* the heuristic moves its items: boxes of its own */
-    ok = (b.items = malloc((size_t)n * sizeof *b.items)) != NULL;
-    for (int k = 0; ok && k < n; k++) {
+  } else if (ok && (b.items = malloc((size_t)n * sizeof *b.items))) {
+    for (int k = 0; k < n; k++) { /* the heuristic moves its items: its own boxes */
       b.items[k] = ball_box(balls[k]);
       b.ids[k] = k;
     }
-#pragma omp parallel if (ok && n > 8192)
+#pragma omp parallel if (n > 8192)
 #pragma omp single
-    if (ok)
-      sah_build_node(&b, 0, 0, n, 0, 1);
+    sah_build_node(&b, 0, 0, n, 0, 1);
     free(b.items);
-    ok = ok && squeeze(&b.nodes, n, &n_nodes);
+    ok = squeeze(&b.nodes, n, &n_nodes);
     for (int k = 0; ok && k < n_nodes; k++)
       if (b.nodes[k].meta > 1)
         qsort(b.ids + b.nodes[k].index, (size_t)b.nodes[k].meta, sizeof(int), compare_int);
+  } else {
+    ok = false; /* no room for the boxes */
   }
   if (!ok) {
     fprintf(stderr, "bvh: out of memory for %d spheres\n", n);

@@ -1,7 +1,8 @@
 /* Whole scene texts (step 02): a file read whole, then parsed; a large text
  * in pieces at once, one per thread, each writing its shapes at its place in
- * one array, merged in file order (a scene of 10^6 spheres is 74 MB). Errors are always reported by the one-piece parse, so
- * they read the same. docs/scene-format.md; docs/reliability.md. */
+ * one array, merged in file order (a scene of 10^6 spheres is 74 MB). Errors
+ * are always reported by the one-piece parse, so they read the same.
+ * docs/scene-format.md; docs/reliability.md. */
 #include "app/parser.h"
 #include "app/parser_state.h"
 
@@ -85,9 +86,11 @@ static void merge_shapes(Scene *s, const Scene *q, int first_material)
   memmove(to, q->instances, (size_t)n * sizeof *to);
   /* A piece that defines no material has no index to move: its shapes'
    * materials are all references resolved by the pending merge. */
-#pragma omp parallel for schedule(static) if (n > 65536 && q->n_materials > 0)
-  for (int k = 0; k < (q->n_materials > 0 ? n : 0); k++)
-    to[k].material += to[k].material >= 0 ? first_material : 0;
+  if (q->n_materials > 0) {
+#pragma omp parallel for schedule(static) if (n > 65536)
+    for (int k = 0; k < n; k++)
+      to[k].material += to[k].material >= 0 ? first_material : 0;
+  }
   if (q->n_shapes > 0)
     s->n_shapes = s->n_instances + q->n_shapes;
   s->n_instances += q->n_instances;
