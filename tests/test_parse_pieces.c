@@ -202,6 +202,61 @@ Test(parse_pieces, shapes_fit_their_pieces_room)
   CHECK_DONE(&c);
 }
 
+/* A header (the lines before the first sphere) and 3000 spheres in 2 to 9
+ * pieces, as whole, and never again whole. When the spheres name only the
+ * header's materials, each piece, given them (docs/reliability.md, "Sixth
+ * pass"), leaves no reference pending; when pieces define materials of their
+ * own, used by later spheres, those keep their place after the header's. */
+static void header_and_spheres(Check *c, bool own_materials)
+{
+  static char text[1 << 18];
+  size_t len = (size_t)snprintf(text, sizeof text,
+                                "film 8 6\nmaterial a diffuse 0.5 0.5 0.5\n"
+                                "material b diffuse 0.1 0.2 0.3\n"
+                                "plane point 0 -1 0 normal 0 1 0 material b\n");
+  for (int k = 0; k < 3000; k++) {
+    if (own_materials && k % 700 == 350)
+      len += (size_t)snprintf(text + len, sizeof text - len, "material m%d diffuse 0.%d 0 0\n",
+                              k, k % 9 + 1);
+    const char *name = k % 2 ? "a" : "b";
+    char own[16];
+    if (own_materials && k % 3 == 0 && k > 350) {
+      snprintf(own, sizeof own, "m%d", (k - 350) / 700 * 700 + 350);
+      name = own;
+    }
+    len += (size_t)snprintf(text + len, sizeof text - len,
+                            "sphere center %d 0 -5 radius 0.5 material %s\n", k, name);
+  }
+  cr_assert(len < sizeof text - 1);
+  char whole_err[512], piece_err[512];
+  Scene whole, pieces;
+  cr_assert(parse_in_pieces(text, len, 1, &whole, whole_err, sizeof whole_err), "%s", whole_err);
+  for (int chunks = 2; chunks <= 9; chunks++) {
+    int reparses = parser_reparses, pending = parser_pieces_pending;
+    bool ok_p = parse_in_pieces(text, len, chunks, &pieces, piece_err, sizeof piece_err);
+    CHECK_THAT(c, ok_p && same_scene(&whole, &pieces) && parser_reparses == reparses,
+               "a header and 3000 spheres%s, in %d pieces: expected the whole parse's scene "
+               "from the pieces, got %s%s", own_materials ? " (pieces define materials)" : "",
+               chunks, !ok_p ? "an error" : same_scene(&whole, &pieces) ? "it" : "another scene",
+               parser_reparses == reparses ? "" : " only from parsing again whole");
+    CHECK_THAT(c, own_materials || parser_pieces_pending == pending,
+               "3000 spheres naming the header's materials, in %d pieces: expected 0 "
+               "references left pending by the pieces (each given the header's materials), "
+               "got %d", chunks, parser_pieces_pending - pending);
+    if (ok_p)
+      scene_free(&pieces);
+  }
+  scene_free(&whole);
+}
+
+Test(parse_pieces, header_materials_reach_every_piece)
+{
+  Check c = CHECK("parser_load_chunks", "docs/reliability.md, \"Sixth pass\"");
+  header_and_spheres(&c, false);
+  header_and_spheres(&c, true);
+  CHECK_DONE(&c);
+}
+
 /* A scene file of 8 MB or more is mapped, not read into a buffer: nothing
  * follows its last byte. Such files, one ending in a newline and one whose
  * last line has none and ends exactly at a page boundary, parse as their

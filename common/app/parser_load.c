@@ -1,8 +1,11 @@
 /* Whole scene texts (step 02): a file read whole, then parsed; a large text
  * in pieces at once, one per thread, each writing its shapes at its place in
- * one array, merged in file order (a scene of 10^6 spheres is 74 MB). Errors
- * are always reported by the one-piece parse, so they read the same.
- * docs/scene-format.md; docs/reliability.md. */
+ * one array, merged in file order (a scene of 10^6 spheres is 74 MB). The
+ * lines before the first sphere line, when they are short, are parsed first
+ * and their materials given to every piece. Errors are always reported by
+ * the one-piece parse, so they read the same. docs/scene-format.md;
+ * docs/reliability.md. */
+#define _GNU_SOURCE /* memmem */
 #include "app/parser.h"
 #include "app/parser_state.h"
 
@@ -32,13 +35,14 @@ static bool parse_whole(const char *file, const char *text, size_t len, Scene *s
   return ok;
 }
 
-/* Piece boundaries, each just after a '\n': start[0 .. n], start[n] = len. */
-static int cut_pieces(const char *text, size_t len, int want, size_t *start)
+/* Piece boundaries in text[from .. len), each just after a '\n':
+ * start[0 .. n], start[0] = from, start[n] = len. */
+static int cut_pieces(const char *text, size_t from, size_t len, int want, size_t *start)
 {
   int n = 1;
-  start[0] = 0;
+  start[0] = from;
   for (int k = 1; k < want; k++) {
-    size_t at = len / (size_t)want * (size_t)k;
+    size_t at = from + (len - from) / (size_t)want * (size_t)k;
     const char *nl = at > start[n - 1] ? memchr(text + at, '\n', len - at) : NULL;
     if (nl && (size_t)(nl - text) + 1 < len)
       start[n++] = (size_t)(nl - text) + 1;
@@ -52,6 +56,33 @@ typedef struct Piece {
   Parser p;
   bool ok;
 } Piece;
+
+/* The header: the lines before the first that starts with a sphere, when it
+ * starts within the first `limit` bytes; 0 otherwise. Parsed alone first, it
+ * gives its materials to every piece, which then finds the materials the
+ * spheres name instead of keeping each reference to resolve later (10^6
+ * spheres: 500 000 references, 8 MB, in the second of two pieces;
+ * docs/reliability.md, "Sixth pass"). */
+static size_t header_length(const char *text, size_t len, size_t limit)
+{
+  static const char word[] = "\nsphere ";
+  if (len < limit)
+    limit = len;
+  const char *at = memmem(text, limit, word, sizeof word - 1);
+  return at ? (size_t)(at - text) + 1 : 0;
+}
+
+/* Piece `to` starts out knowing the materials of the header `h` (the first
+ * of its own materials, then, is h's count). False when out of memory. */
+static bool preload_materials(Piece *to, const Piece *h)
+{
+  Scene *s = &to->scene;
+  for (int k = 0; k < h->scene.n_materials; k++)
+    if (!scene_add_material(s, &h->scene.materials[k]) ||
+        !names_add(&to->p.names, parser_materials(s), k))
+      return false;
+  return true;
+}
 
 /* The values of piece q's once-statements into piece 0's; false when both
  * have one (the whole parse says where the second is). */
@@ -77,36 +108,39 @@ static bool merge_once(Piece *to, const Piece *q)
 }
 
 /* Piece q's shapes, parsed in place further on in the array piece 0's scene
- * owns, moved down to follow piece 0's, their material indices moved past
- * piece 0's materials. */
-static void merge_shapes(Scene *s, const Scene *q, int first_material)
+ * owns, moved down to follow piece 0's; the indices of the materials q
+ * defined itself (after the `known` ones it was given, which keep theirs)
+ * moved to where they land, from first_material on. */
+static void merge_shapes(Scene *s, const Scene *q, int known, int first_material)
 {
   Instance *to = s->instances + s->n_instances;
-  int n = q->n_instances;
+  int n = q->n_instances, shift = first_material - known;
   memmove(to, q->instances, (size_t)n * sizeof *to);
   /* A piece that defines no material has no index to move: its shapes'
-   * materials are all references resolved by the pending merge. */
-  if (q->n_materials > 0) {
+   * materials are the given ones or references resolved by the pending
+   * merge (a light's shape has none, -1). */
+  if (q->n_materials > known) {
 #pragma omp parallel for schedule(static) if (n > 65536)
     for (int k = 0; k < n; k++)
-      to[k].material += to[k].material >= 0 ? first_material : 0;
+      to[k].material += to[k].material >= known ? shift : 0;
   }
   if (q->n_shapes > 0)
     s->n_shapes = s->n_instances + q->n_shapes;
   s->n_instances += q->n_instances;
 }
 
-/* Append piece q to piece 0: materials (each name new), lights, shapes
- * (their material indices moved past piece 0's), references to materials
- * not defined in q before them (resolved when piece 0 now has the material,
- * else left to resolve). False on a conflict or out of memory. */
-static bool merge(Piece *to, const Piece *q)
+/* Append piece q to piece 0: materials (each name new; q's first `known`
+ * were piece 0's to begin with), lights, shapes (their material indices
+ * moved past piece 0's), references to materials not defined in q before
+ * them (resolved when piece 0 now has the material, else left to resolve).
+ * False on a conflict or out of memory. */
+static bool merge(Piece *to, const Piece *q, int known)
 {
   Scene *s = &to->scene;
   int first_material = s->n_materials, first_instance = s->n_instances;
   if (!merge_once(to, q))
     return false;
-  for (int k = 0; k < q->scene.n_materials; k++) {
+  for (int k = known; k < q->scene.n_materials; k++) {
     const Material *m = &q->scene.materials[k];
     if (names_find(&to->p.names, parser_materials(s), m->name, (int)strlen(m->name)) >= 0 ||
         !scene_add_material(s, m) || !names_add(&to->p.names, parser_materials(s),
@@ -116,7 +150,7 @@ static bool merge(Piece *to, const Piece *q)
   for (int k = 0; k < q->scene.n_lights; k++)
     if (!scene_add_light(s, &q->scene.lights[k]))
       return false;
-  merge_shapes(s, &q->scene, first_material);
+  merge_shapes(s, &q->scene, known, first_material);
   return parser_pending_merge(&to->p, &q->p, first_instance);
 }
 
@@ -138,15 +172,36 @@ static int count_lines(const char *text, size_t len)
 }
 
 int parser_reparses = 0;
+int parser_pieces_pending = 0;
+
+/* Piece k of the text, starting at its place `shapes` in the shared array,
+ * with room for `room` shapes. */
+static void piece_begin(Piece *pc, const char *file, const char *text, size_t len,
+                        Instance *shapes, int room, bool first)
+{
+  scene_init(&pc->scene);
+  pc->scene.instances = shapes;
+  parser_begin(&pc->p, file, text, len, &pc->scene);
+  pc->p.room = room;
+  pc->p.lx.quiet = true;
+  if (first)
+    lexer_skip_bom(&pc->p.lx);
+}
 
 bool parser_load_chunks(const char *file, const char *text, size_t len, Scene *scene,
                         int chunks)
 {
-  size_t start[PIECES_MAX + 1];
-  int n = cut_pieces(text, len, chunks < PIECES_MAX ? chunks : PIECES_MAX, start);
+  int want = chunks < PIECES_MAX ? chunks : PIECES_MAX;
+  /* A header of at most a sixteenth of a piece (parsed alone, while the
+   * other threads wait) becomes piece 0: h = 1. */
+  size_t start[PIECES_MAX + 2];
+  size_t head = want > 1 ? header_length(text, len, len / ((size_t)want * 16)) : 0;
+  int h = head > 0;
+  start[0] = 0;
+  int n = h + cut_pieces(text, head, len, want, start + h);
   /* aligned: a Scene holds cglm matrices, 32-byte aligned in AVX builds */
   Piece *piece = aligned_alloc(_Alignof(Piece), (size_t)n * sizeof *piece);
-  if (n < 2 || !piece) {
+  if (n - h < 2 || !piece) {
     free(piece);
     return parse_whole(file, text, len, scene);
   }
@@ -156,7 +211,7 @@ bool parser_load_chunks(const char *file, const char *text, size_t len, Scene *s
    * it into new memory (docs/reliability.md, "Fifth pass"). Its room is the
    * growing array's for that many (common/grow.h), as scene_free and later
    * additions expect. */
-  int first[PIECES_MAX + 1];
+  int first[PIECES_MAX + 2];
 #pragma omp parallel for schedule(static, 1)
   for (int k = 0; k < n; k++)
     first[k + 1] = count_lines(text + start[k], start[k + 1] - start[k]);
@@ -168,20 +223,23 @@ bool parser_load_chunks(const char *file, const char *text, size_t len, Scene *s
     free(piece);
     return parse_whole(file, text, len, scene);
   }
-#pragma omp parallel for schedule(static, 1)
-  for (int k = 0; k < n; k++) {
-    scene_init(&piece[k].scene);
-    piece[k].scene.instances = shapes + first[k];
-    parser_begin(&piece[k].p, file, text + start[k], start[k + 1] - start[k], &piece[k].scene);
-    piece[k].p.room = first[k + 1] - first[k];
-    piece[k].p.lx.quiet = true;
-    if (k == 0)
-      lexer_skip_bom(&piece[k].p.lx);
+  for (int k = 0; k < h; k++) { /* the header */
+    piece_begin(&piece[k], file, text, start[1], shapes, first[1], true);
     piece[k].ok = parser_statements(&piece[k].p);
+  }
+  int known = h ? piece[0].scene.n_materials : 0; /* what each piece is given */
+#pragma omp parallel for schedule(static, 1)
+  for (int k = h; k < n; k++) {
+    piece_begin(&piece[k], file, text + start[k], start[k + 1] - start[k], shapes + first[k],
+                first[k + 1] - first[k], k == 0);
+    piece[k].ok = (!h || (piece[0].ok && preload_materials(&piece[k], &piece[0]))) &&
+                  parser_statements(&piece[k].p);
+#pragma omp atomic
+    parser_pieces_pending += piece[k].p.n_pending;
   }
   bool ok = true;
   for (int k = 0; k < n; k++)
-    ok = ok && piece[k].ok && (k == 0 || merge(&piece[0], &piece[k]));
+    ok = ok && piece[k].ok && (k == 0 || merge(&piece[0], &piece[k], known));
   ok = ok && parser_resolve(&piece[0].p);
   for (int k = 0; k < n; k++) {
     parser_end(&piece[k].p);

@@ -72,6 +72,13 @@ extern bool parser_fast_lines;
  * there and nowhere else, as a parse twice as slow). */
 extern int parser_reparses;
 
+/* References to materials that the pieces of parser_load_chunks left to
+ * resolve after parsing, summed over every call: none to the materials of
+ * the lines before the first sphere, which every piece is given (the tests
+ * check; without them, the second half of a large scene would only parse
+ * slower). */
+extern int parser_pieces_pending;
+
 /* Resolve p->pending; false (printed) at the first undefined name. */
 bool parser_resolve(Parser *p);
 
