@@ -115,7 +115,8 @@ static void merge_shapes(Scene *s, const Scene *q, int known, int first_material
 {
   Instance *to = s->instances + s->n_instances;
   int n = q->n_instances, shift = first_material - known;
-  memmove(to, q->instances, (size_t)n * sizeof *to);
+  if (to != q->instances) /* nothing to move after a header or shapes only */
+    memmove(to, q->instances, (size_t)n * sizeof *to);
   /* A piece that defines no material has no index to move: its shapes'
    * materials are the given ones or references resolved by the pending
    * merge (a light's shape has none, -1). */
@@ -208,24 +209,43 @@ bool parser_load_chunks(const char *file, const char *text, size_t len, Scene *s
   /* One array for every piece's shapes, room for one a line (a statement
    * is a line): piece k parses into it from first[k], so merging moves each
    * piece down over the few lines that were not shapes instead of copying
-   * it into new memory (docs/reliability.md, "Fifth pass"). Its room is the
-   * growing array's for that many (common/grow.h), as scene_free and later
+   * it into new memory (docs/reliability.md, "Fifth pass"). The header is
+   * parsed first, into an array of its own, and takes the room of its
+   * shapes only: the pieces after a header and before any other line that
+   * is not a shape stay where they are. The array's room is the growing
+   * array's for that many (common/grow.h), as scene_free and later
    * additions expect. */
   int first[PIECES_MAX + 2];
 #pragma omp parallel for schedule(static, 1)
-  for (int k = 0; k < n; k++)
+  for (int k = h; k < n; k++)
     first[k + 1] = count_lines(text + start[k], start[k + 1] - start[k]);
+  bool ok = true;
+  if (h) {
+    piece_begin(&piece[0], file, text, start[1], NULL, 0, true);
+    ok = piece[0].ok = parser_statements(&piece[0].p);
+    first[1] = piece[0].scene.n_instances;
+  }
   first[0] = 0;
   for (int k = 0; k < n; k++)
     first[k + 1] += first[k];
-  Instance *shapes = malloc(grow_capacity((size_t)first[n]) * sizeof *shapes);
+  Instance *shapes = ok ? malloc(grow_capacity((size_t)first[n]) * sizeof *shapes) : NULL;
   if (!shapes) {
+    if (h) {
+      parser_end(&piece[0].p);
+      scene_free(&piece[0].scene);
+    }
     free(piece);
+    if (!ok) {
+#pragma omp atomic
+      parser_reparses++;
+    }
     return parse_whole(file, text, len, scene);
   }
-  for (int k = 0; k < h; k++) { /* the header */
-    piece_begin(&piece[k], file, text, start[1], shapes, first[1], true);
-    piece[k].ok = parser_statements(&piece[k].p);
+  if (h && first[1] > 0)
+    memcpy(shapes, piece[0].scene.instances, (size_t)first[1] * sizeof *shapes);
+  if (h) {
+    free(piece[0].scene.instances);
+    piece[0].scene.instances = shapes;
   }
   int known = h ? piece[0].scene.n_materials : 0; /* what each piece is given */
 #pragma omp parallel for schedule(static, 1)
@@ -237,7 +257,6 @@ bool parser_load_chunks(const char *file, const char *text, size_t len, Scene *s
 #pragma omp atomic
     parser_pieces_pending += piece[k].p.n_pending;
   }
-  bool ok = true;
   for (int k = 0; k < n; k++)
     ok = ok && piece[k].ok && (k == 0 || merge(&piece[0], &piece[k], known));
   ok = ok && parser_resolve(&piece[0].p);
