@@ -21,8 +21,8 @@ say() { echo "check-starter: $*"; }
 fail() { say "FAIL: $*"; bad=$((bad + 1)); }
 show_log() { sed -n '/FAIL\|fail\|rror\|expected\|got\|read /p' "$log" | head -n 20 | sed 's/^/    /'; }
 # test_step K pass|fail: make test-step K in the starter must pass (or fail).
-# Built with -O1 without LTO in a folder of its own (as check-regions and the
-# grader build): each stage then recompiles the files it wrote and relinks
+# Built with -O1 without LTO in a folder of its own (as check-regions'
+# scratch tree is): each stage then recompiles the files it wrote and relinks
 # cheaply, where an LTO link optimises every program again. The starter's
 # build with the default flags is checked once, first.
 QUICK="BUILD=build/quick OPT=-O1"

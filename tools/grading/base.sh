@@ -12,7 +12,7 @@ set -euo pipefail
 top=$(git -C "$(dirname "$0")" rev-parse --show-toplevel)
 cd "$top"
 cache=$(realpath -m -- "$1")
-opt=${GRADE_OPT:--O1}
+opt=${GRADE_OPT:--O2}
 jobs=${GRADE_BUILD_JOBS:-$(nproc)}
 mkdir -p "$cache"
 
