@@ -192,11 +192,13 @@ static void piece_begin(Piece *pc, const char *file, const char *text, size_t le
 bool parser_load_chunks(const char *file, const char *text, size_t len, Scene *scene,
                         int chunks)
 {
+  if (chunks < 2)
+    return parse_whole(file, text, len, scene);
   int want = chunks < PIECES_MAX ? chunks : PIECES_MAX;
   /* A header of at most a sixteenth of a piece (parsed alone, while the
    * other threads wait) becomes piece 0: h = 1. */
   size_t start[PIECES_MAX + 2];
-  size_t head = want > 1 ? header_length(text, len, len / ((size_t)want * 16)) : 0;
+  size_t head = header_length(text, len, len / ((size_t)want * 16));
   int h = head > 0;
   start[0] = 0;
   int n = h + cut_pieces(text, head, len, want, start + h);
