@@ -243,9 +243,9 @@ bool parser_load_chunks(const char *file, const char *text, size_t len, Scene *s
     }
     return parse_whole(file, text, len, scene);
   }
-  if (h && first[1] > 0)
-    memcpy(shapes, piece[0].scene.instances, (size_t)first[1] * sizeof *shapes);
-  if (h) {
+  if (h) { /* the header's shapes to the front of the shared array */
+    if (first[1] > 0)
+      memcpy(shapes, piece[0].scene.instances, (size_t)first[1] * sizeof *shapes);
     free(piece[0].scene.instances);
     piece[0].scene.instances = shapes;
   }
@@ -254,7 +254,7 @@ bool parser_load_chunks(const char *file, const char *text, size_t len, Scene *s
   for (int k = h; k < n; k++) {
     piece_begin(&piece[k], file, text + start[k], start[k + 1] - start[k], shapes + first[k],
                 first[k + 1] - first[k], k == 0);
-    piece[k].ok = (!h || (piece[0].ok && preload_materials(&piece[k], &piece[0]))) &&
+    piece[k].ok = (!h || preload_materials(&piece[k], &piece[0])) &&
                   parser_statements(&piece[k].p);
 #pragma omp atomic
     parser_pieces_pending += piece[k].p.n_pending;
