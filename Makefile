@@ -201,9 +201,11 @@ test-step:
 	@tests/run.sh --verbose $(BUILD)/tests/$(STEP_N); status=$$?; \
 	  $(REPORT_AFTER_STEP); exit $$status
 
-sanitize:
+# Both suites: one after the other, or side by side under make -j2 (CI runs
+# make -j2 -Orecurse sanitize, each suite's lines printed together).
+sanitize: sanitize-gcc sanitize-clang
+sanitize-gcc:
 	$(MAKE) BUILD=build/san SAN=1 OPT=-O1 test
-	$(MAKE) sanitize-clang
 
 # ---------------------------------------------------------------- images, diffs
 # Reference images: each step's default scene at the reference size, with the
@@ -275,7 +277,7 @@ help:
 	@echo "  make check-mutants  every mutant still applies to the code"
 	@echo "  make check-diffs, check-refs, check-images, check-traces  derived files and citations up to date"
 	@echo "Reliability (docs/reliability.md)"
-	@echo "  make sanitize     the whole suite under AddressSanitizer + UBSan, gcc's then clang's"
+	@echo "  make sanitize     the whole suite under AddressSanitizer + UBSan, gcc's and clang's"
 	@echo "  make valgrind     the whole suite under valgrind (an x86-64-v3 build in build/vg)"
 	@echo "  make fuzz         fuzz the scene reader, the command line and a render, FUZZ_SECONDS each"
 	@echo "Performance (docs/benchmarks.md, docs/performance.md)"
@@ -290,7 +292,7 @@ help:
 starter:
 	@tools/starter.sh $(BUILD)/starter $(N)
 
-.PHONY: all build deps bench-deps test stress test-step sanitize images diffs \
+.PHONY: all build deps bench-deps test stress test-step sanitize sanitize-gcc images diffs \
         check-diffs bench bench-accuracy clean help starter mistakes
 
 # Each tool's rules (fuzzing, grading, region checks, ...) in a file of its own.

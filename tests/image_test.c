@@ -213,12 +213,16 @@ static int expected_byte(float c, int *alt)
   return want;
 }
 
+/* At half the reference size (a quarter of the pixels, still tens of
+ * thousands of values): the film is rendered twice, once per format. */
 Test(reference_image, png_bytes_are_the_rounded_film, .timeout = 300)
 {
   const char *pfm_path = OUT_DIR "/" STEP_NAME "-bytes.pfm";
   const char *png_path = OUT_DIR "/" STEP_NAME "-bytes.png";
   int w, h, pw, ph, n;
   reference_size(&w, &h);
+  w = (w + 1) / 2;
+  h = (h + 1) / 2;
   render(w, h, pfm_path);
   render(w, h, png_path);
   float *film;

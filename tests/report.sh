@@ -19,9 +19,14 @@ if [ -z "$browser" ]; then
   exit 0
 fi
 
+# A profile of its own: two runs at once (make -j2 sanitize runs gcc's and
+# clang's suites side by side) would otherwise share the user's.
+profile=$(mktemp -d "${TMPDIR:-/tmp}/report-test.XXXXXX")
+trap 'rm -rf "$profile"' EXIT
+
 # shot PAGE PNG HEIGHT: the page at 1400 x HEIGHT pixels, one device pixel each.
 shot() {
-  "$browser" --headless --no-sandbox --disable-gpu --hide-scrollbars \
+  "$browser" --headless --no-sandbox --disable-gpu --hide-scrollbars --user-data-dir="$profile" \
     --force-device-scale-factor=1 --window-size=1400,"$3" --screenshot="$2" \
     "file://$(realpath "$1")" > /dev/null 2>&1
 }
