@@ -174,7 +174,11 @@ $(BUILD)/tests/stress: $(STRESS_OBJ) $(LIBCOMMON)
 	@$(CC) $(CFLAGS) $(LDFLAGS) $^ $(LDLIBS) -lcriterion -lmpfr -lgmp -o $@
 STRESSBIN := $(if $(STRESS_TESTS),$(BUILD)/tests/stress)
 
-test: $(TESTBIN) $(STRESSBIN) $(BUILD)/bin/04-phong $(BUILD)/bin/05-shadows $(BUILD)/bin/mistakes
+# make test-build: what make test runs, built and not run (make -j2
+# test-build builds it two at a time; CI does, before make test).
+test-build: $(TESTBIN) $(STRESSBIN) $(BUILD)/bin/04-phong $(BUILD)/bin/05-shadows \
+            $(BUILD)/bin/mistakes
+test: test-build
 	@tests/run.sh $(TESTBIN) $(STRESSBIN) $(TRACE_TESTBIN); status=$$?; \
 	  $(REPORT_AFTER_TEST) || status=1; \
 	  $(if $(SAN),,$(foreach t,$(TEST_AFTER),$(MAKE) --no-print-directory $(t) || status=1;)) \
@@ -252,6 +256,7 @@ help:
 	@echo "Build and test"
 	@echo "  make              build every step and render its default scene to $(BUILD)/out/"
 	@echo "  make test         every unit, stress, image, reliability and trace test, the report, the sample class graded"
+	@echo "  make test-build   build what make test runs, without running it (make -j2 test-build: two at a time)"
 	@echo "  make test-step N  step N's unit tests and image test, one verdict line per check (N = 1 .. 8)"
 	@echo "  make stress       the numerical stress tests alone"
 	@echo "  make test-reliability  the bad-input suite, the number reader, output files, fuzz corpus"
@@ -292,7 +297,7 @@ help:
 starter:
 	@tools/starter.sh $(BUILD)/starter $(N)
 
-.PHONY: all build deps bench-deps test stress test-step sanitize sanitize-gcc images diffs \
+.PHONY: all build deps bench-deps test test-build stress test-step sanitize sanitize-gcc images diffs \
         check-diffs bench bench-accuracy clean help starter mistakes
 
 # Each tool's rules (fuzzing, grading, region checks, ...) in a file of its own.

@@ -29,7 +29,7 @@ $(BUILD)/tests/reliability: $(REL_OBJ) $($(REL_STEP)_LIB) $(LIBCOMMON) $(BUILD)/
 	@$(CC) $(CFLAGS) $(LDFLAGS) $(filter %.o %.a,$^) $(LDLIBS) -lcriterion -o $@
 
 TESTBIN += $(BUILD)/tests/reliability
-test: $(BUILD)/tests/reliability
+test-build: $(BUILD)/tests/reliability
 
 # make test-reliability: this binary alone, verbose.
 test-reliability: $(BUILD)/tests/reliability
