@@ -1,10 +1,10 @@
 /* Whole scene texts (step 02): a file read whole, then parsed; a large text
- * in pieces at once, one per thread, each writing its shapes at its place in
- * one array, merged in file order (a scene of 10^6 spheres is 74 MB). The
- * lines before the first sphere line, when they are short, are parsed first
- * and their materials given to every piece. Errors are always reported by
- * the one-piece parse, so they read the same. docs/scene-format.md;
- * docs/reliability.md. */
+ * in pieces at once, four per thread taken in turn, each writing its shapes
+ * at its place in one array, merged in file order (a scene of 10^6 spheres
+ * is 74 MB). The lines before the first sphere line, when they are short,
+ * are parsed first and their materials given to every piece. Errors are
+ * always reported by the one-piece parse, so they read the same.
+ * docs/scene-format.md; docs/reliability.md. */
 #define _GNU_SOURCE /* memmem */
 #include "app/parser.h"
 #include "app/parser_state.h"
@@ -21,6 +21,7 @@
 enum {
   PIECE_MIN = 1 << 21, /* bytes: smaller texts are parsed in one piece */
   PIECES_MAX = 64,
+  PIECES_PER_THREAD = 4, /* taken in turn: a slow core holds up less */
 };
 
 static bool parse_whole(const char *file, const char *text, size_t len, Scene *scene)
@@ -250,7 +251,7 @@ bool parser_load_chunks(const char *file, const char *text, size_t len, Scene *s
     piece[0].scene.instances = shapes;
   }
   int known = h ? piece[0].scene.n_materials : 0; /* what each piece is given */
-#pragma omp parallel for schedule(static, 1)
+#pragma omp parallel for schedule(dynamic, 1)
   for (int k = h; k < n; k++) {
     piece_begin(&piece[k], file, text + start[k], start[k + 1] - start[k], shapes + first[k],
                 first[k + 1] - first[k], k == 0);
@@ -292,7 +293,8 @@ bool parser_load_text(const char *file, const char *text, size_t len, Scene *sce
   size_t pieces = len / PIECE_MIN, threads = (size_t)omp_get_max_threads();
   if (pieces < 2 || threads < 2)
     return parse_whole(file, text, len, scene);
-  return parser_load_chunks(file, text, len, scene, (int)(pieces < threads ? pieces : threads));
+  size_t want = PIECES_PER_THREAD * threads;
+  return parser_load_chunks(file, text, len, scene, (int)(pieces < want ? pieces : want));
 }
 
 bool parser_load_string(const char *file, const char *text, Scene *scene)
