@@ -6,6 +6,7 @@
 #include "accel/bvh_sah.h"
 
 #include <float.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -146,49 +147,58 @@ static void sweep(const Bins *bins, int a, float area, float *best, int *axis,
   }
 }
 
-/* The sweep of a small node (count <= SMALL), bin by non-empty bin: the
- * boundaries between two non-empty bins give the same two sets, and the first
- * of them is the one the dense sweep keeps (a strictly lower cost wins), so
- * the choice is the dense sweep's, for far less work than 16 bins a node. */
-static void sweep_small(const SahBuild *b, int first, int count, const Box *cb, int a,
-                        float scale, float area, float *best, int *axis, int *split_bin)
+/* The sweeps of a small node (count <= SMALL), on the three axes at once,
+ * bin by non-empty bin: the boundaries between two non-empty bins give the
+ * same two sets, and the first of them is the one the dense sweep keeps (a
+ * strictly lower cost wins), so the choice is the dense sweep's, for far
+ * less work than 16 bins an axis. Each item is binned once (bins_of); a bin
+ * is started when its first item comes (`used`), and the sweeps go over the
+ * bins that were, in bin order. */
+static void sweep_small(const SahBuild *b, int first, int count, const Box *cb, V4 scale,
+                        float area, float *best, int *axis, int *split_bin)
 {
-  int bin[SMALL], order[SMALL], n[SMALL], right_n[SMALL], last[SMALL], groups = 0;
-  Box box[SMALL], right[SMALL];
-  for (int k = 0; k < count; k++) { /* insertion sort of the items by bin */
-    int v = bin_of(centre2(&b->items[first + k], a), cb->lo[a], scale), j = k;
-    for (; j > 0 && bin[j - 1] > v; j--) {
-      bin[j] = bin[j - 1];
-      order[j] = order[j - 1];
+  Box box[3][BINS];
+  int n[3][BINS];
+  uint32_t used[3] = {0, 0, 0};
+  for (int k = first; k < first + count; k++) {
+    const Box *it = &b->items[k];
+    I4 bin = bins_of(it, cb, scale);
+    int w = weight_of(b, k);
+    for (int a = 0; a < 3; a++) {
+      int v = bin[a];
+      if (!(used[a] >> v & 1u)) {
+        used[a] |= 1u << v;
+        box[a][v] = sah_box_empty();
+        n[a][v] = 0;
+      }
+      sah_box_grow(&box[a][v], it);
+      n[a][v] += w;
     }
-    bin[j] = v;
-    order[j] = k;
   }
-  for (int k = 0; k < count; k++) { /* one group per non-empty bin */
-    if (k == 0 || bin[k] != bin[k - 1]) {
-      box[groups] = sah_box_empty();
-      n[groups] = 0;
-      last[groups++] = bin[k];
+  for (int a = 0; a < 3; a++) {
+    if (scale[a] == 0.0f || (used[a] & (used[a] - 1)) == 0)
+      continue; /* one bin: no boundary between two non-empty ones */
+    int last[BINS], right_n[BINS], groups = 0;
+    Box right[BINS];
+    for (uint32_t m = used[a]; m; m &= m - 1)
+      last[groups++] = __builtin_ctz(m);
+    Box acc = sah_box_empty();
+    int acc_n = 0;
+    for (int g = groups - 1; g > 0; g--) {
+      sah_box_grow(&acc, &box[a][last[g]]);
+      acc_n += n[a][last[g]];
+      right[g] = acc;
+      right_n[g] = acc_n;
     }
-    sah_box_grow(&box[groups - 1], &b->items[first + order[k]]);
-    n[groups - 1] += weight_of(b, first + order[k]);
-  }
-  Box acc = sah_box_empty();
-  int acc_n = 0;
-  for (int g = groups - 1; g > 0; g--) {
-    sah_box_grow(&acc, &box[g]);
-    acc_n += n[g];
-    right[g] = acc;
-    right_n[g] = acc_n;
-  }
-  acc = sah_box_empty();
-  acc_n = 0;
-  for (int g = 1; g < groups; g++) {
-    sah_box_grow(&acc, &box[g - 1]);
-    acc_n += n[g - 1];
-    consider(COST_TRAV + (box_area(&acc) * leaf_cost(acc_n) +
-                          box_area(&right[g]) * leaf_cost(right_n[g])) / area,
-             a, last[g - 1] + 1, best, axis, split_bin);
+    acc = sah_box_empty();
+    acc_n = 0;
+    for (int g = 1; g < groups; g++) {
+      sah_box_grow(&acc, &box[a][last[g - 1]]);
+      acc_n += n[a][last[g - 1]];
+      consider(COST_TRAV + (box_area(&acc) * leaf_cost(acc_n) +
+                            box_area(&right[g]) * leaf_cost(right_n[g])) / area,
+               a, last[g - 1] + 1, best, axis, split_bin);
+    }
   }
 }
 
@@ -204,9 +214,7 @@ static float best_split(const SahBuild *b, int first, int count, const Box *cb,
     scale[a] = extent > 0.0f ? (float)BINS / extent : 0.0f;
   }
   if (count <= SMALL) {
-    for (int a = 0; a < 3; a++)
-      if (scale[a] != 0.0f)
-        sweep_small(b, first, count, cb, a, scale[a], area, &best, axis, split_bin);
+    sweep_small(b, first, count, cb, scale, area, &best, axis, split_bin);
     return best;
   }
   Bins bins;
