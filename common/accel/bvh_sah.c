@@ -13,7 +13,6 @@
 enum {
   BINS = 16,
   MAX_DEPTH = 40,
-  SMALL = 16,        /* nodes this small are swept bin by non-empty bin */
   TASK_MIN = 8192,   /* subtrees of more (weighted) items are built as tasks */
 };
 static const float COST_TRAV = 1.0f, COST_ITEM = 1.5f;
@@ -86,30 +85,6 @@ static I4 bins_of(const Box *it, const Box *cb, V4 scale)
   return __builtin_convertvector(v4_min(x, top), I4);
 }
 
-/* Items per bin and their bounds, on each axis, in one pass over the items. */
-typedef struct Bins {
-  Box box[3][BINS];
-  int n[3][BINS];
-} Bins;
-
-static void fill_bins(const SahBuild *b, int first, int count, const Box *cb, V4 scale,
-                      Bins *bins)
-{
-  for (int a = 0; a < 3; a++)
-    for (int k = 0; k < BINS; k++) {
-      bins->box[a][k] = sah_box_empty();
-      bins->n[a][k] = 0;
-    }
-  for (int k = first; k < first + count; k++) {
-    const Box *it = &b->items[k];
-    I4 bin = bins_of(it, cb, scale);
-    for (int a = 0; a < 3; a++) {
-      bins->n[a][bin[a]] += weight_of(b, k);
-      sah_box_grow(&bins->box[a][bin[a]], it);
-    }
-  }
-}
-
 /* Keep the split at bin boundary k of axis a when it is the cheapest yet. */
 static void consider(float cost, int a, int k, float *best, int *axis, int *split_bin)
 {
@@ -120,42 +95,16 @@ static void consider(float cost, int a, int k, float *best, int *axis, int *spli
   }
 }
 
-/* The cheapest boundary on axis a: sweep from the right keeping suffix
- * areas, then from the left. */
-static void sweep(const Bins *bins, int a, float area, float *best, int *axis,
-                  int *split_bin)
-{
-  float right_area[BINS];
-  int right_n[BINS];
-  Box acc = sah_box_empty();
-  int acc_n = 0;
-  for (int k = BINS - 1; k > 0; k--) {
-    sah_box_grow(&acc, &bins->box[a][k]);
-    acc_n += bins->n[a][k];
-    right_area[k] = box_area(&acc);
-    right_n[k] = acc_n;
-  }
-  acc = sah_box_empty();
-  acc_n = 0;
-  for (int k = 1; k < BINS; k++) {
-    sah_box_grow(&acc, &bins->box[a][k - 1]);
-    acc_n += bins->n[a][k - 1];
-    if (acc_n > 0 && right_n[k] > 0)
-      consider(COST_TRAV + (box_area(&acc) * leaf_cost(acc_n) +
-                            right_area[k] * leaf_cost(right_n[k])) / area,
-               a, k, best, axis, split_bin);
-  }
-}
-
-/* The sweeps of a small node (count <= SMALL), on the three axes at once,
- * bin by non-empty bin: the boundaries between two non-empty bins give the
- * same two sets, and the first of them is the one the dense sweep keeps (a
- * strictly lower cost wins), so the choice is the dense sweep's, for far
- * less work than 16 bins an axis. Each item is binned once (bins_of); a bin
- * is started when its first item comes (`used`), and the sweeps go over the
- * bins that were, in bin order. */
-static void sweep_small(const SahBuild *b, int first, int count, const Box *cb, V4 scale,
-                        float area, float *best, int *axis, int *split_bin)
+/* The cheapest bin boundary of items [first, first + count) on each axis.
+ * Each item is binned once on the three axes (bins_of); a bin is started
+ * when its first item comes (`used`). Then, axis by axis, a sweep from the
+ * right keeps the suffix bounds, and one from the left prices each boundary
+ * between two non-empty bins: the boundaries between the same two
+ * non-empty bins split the items alike, so the first of them stands for
+ * all (a strictly lower cost wins), and small nodes pay for the bins they
+ * use, not for 16 an axis. */
+static void sweep_bins(const SahBuild *b, int first, int count, const Box *cb, V4 scale,
+                       float area, float *best, int *axis, int *split_bin)
 {
   Box box[3][BINS];
   int n[3][BINS];
@@ -213,15 +162,7 @@ static float best_split(const SahBuild *b, int first, int count, const Box *cb,
     float extent = cb->hi[a] - cb->lo[a];
     scale[a] = extent > 0.0f ? (float)BINS / extent : 0.0f;
   }
-  if (count <= SMALL) {
-    sweep_small(b, first, count, cb, scale, area, &best, axis, split_bin);
-    return best;
-  }
-  Bins bins;
-  fill_bins(b, first, count, cb, scale, &bins);
-  for (int a = 0; a < 3; a++)
-    if (scale[a] != 0.0f)
-      sweep(&bins, a, area, &best, axis, split_bin);
+  sweep_bins(b, first, count, cb, scale, area, &best, axis, split_bin);
   return best;
 }
 
