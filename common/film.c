@@ -1,23 +1,32 @@
 /* Film: linear float RGB pixels, the lecture's sample positions, export
  * (step 01). docs/01-film.md. */
+#define _DEFAULT_SOURCE /* madvise */
 #include "film.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-
-#include "pages.h"
+#include <sys/mman.h>
 
 /* Zeroed floats for the film. A large film goes in 2 MB pages where the
- * kernel offers them (common/pages.h): otherwise the first write to each
- * 4 KB page is a page fault, about 1 400 of them at 800x600, which cost more
- * than the 3 faults and the memset (docs/performance.md). */
+ * kernel offers them (transparent huge pages): otherwise the first write to
+ * each 4 KB page is a page fault, about 1 400 of them at 800x600, which cost
+ * more than the 3 faults and the memset (docs/performance.md). */
 static float *pixels_alloc(size_t count)
 {
-  float *px = pages_alloc(count * sizeof(float));
-  if (px)
-    memset(px, 0, count * sizeof(float));
+  enum { HUGE_PAGE = 2 << 20 };
+  size_t bytes = count * sizeof(float);
+  if (bytes < HUGE_PAGE)
+    return calloc(count, sizeof(float));
+  size_t rounded = (bytes + HUGE_PAGE - 1) / HUGE_PAGE * HUGE_PAGE;
+  float *px = aligned_alloc(HUGE_PAGE, rounded);
+  if (!px)
+    return NULL;
+#ifdef MADV_HUGEPAGE
+  madvise(px, rounded, MADV_HUGEPAGE); /* a hint: failure changes nothing */
+#endif
+  memset(px, 0, bytes);
   return px;
 }
 

@@ -18,7 +18,6 @@
 #include "accel/bvh.h"
 #include "accel/cones.h"
 #include "accel/hull.h"
-#include "pages.h"
 
 enum {
   STACK = 64,  /* traversal stack: the tree is at most about 60 levels deep */
@@ -311,8 +310,8 @@ bool accel_build(Scene *scene)
     return true;
   Accel *acc = calloc(1, sizeof *acc);
   size_t room = (size_t)scene->n_instances + 1;
-  int *ids = pages_alloc(room * sizeof *ids);
-  Ball *balls = pages_alloc(room * sizeof *balls); /* pages past the spheres' stay untouched */
+  int *ids = malloc(room * sizeof *ids);
+  Ball *balls = malloc(room * sizeof *balls); /* pages past the spheres' stay untouched */
   if (acc)
     acc->others = malloc(room * sizeof *acc->others);
   bool ok = acc && ids && balls && acc->others;

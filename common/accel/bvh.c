@@ -18,7 +18,6 @@
 
 #include "accel/bvh_sah.h"
 #include "accel/morton.h"
-#include "pages.h"
 
 enum {
   CLUSTER_FROM = 16384, /* fewer balls: one build over all of them */
@@ -191,8 +190,8 @@ static int compare_int(const void *a, const void *b)
 bool bvh_build(Bvh *bvh, const Ball *balls, int n, int leaf_max)
 {
   SahBuild b = {.leaf_max = leaf_max, .one_leaf = leaf_max >= n};
-  b.ids = pages_alloc((size_t)n * sizeof *b.ids);
-  b.nodes = pages_alloc((size_t)(2 * n - 1) * sizeof *b.nodes);
+  b.ids = malloc((size_t)n * sizeof *b.ids);
+  b.nodes = malloc((size_t)(2 * n - 1) * sizeof *b.nodes);
   *bvh = (Bvh){0};
   bool ok = b.ids && b.nodes;
   int n_nodes = 0;

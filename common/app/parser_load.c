@@ -17,7 +17,6 @@
 
 #include "app/textfile.h"
 #include "grow.h"
-#include "pages.h"
 
 enum {
   PIECE_MIN = 1 << 21, /* bytes: smaller texts are parsed in one piece */
@@ -232,7 +231,7 @@ bool parser_load_chunks(const char *file, const char *text, size_t len, Scene *s
   first[0] = 0;
   for (int k = 0; k < n; k++)
     first[k + 1] += first[k];
-  Instance *shapes = ok ? pages_alloc(grow_capacity((size_t)first[n]) * sizeof *shapes) : NULL;
+  Instance *shapes = ok ? malloc(grow_capacity((size_t)first[n]) * sizeof *shapes) : NULL;
   if (!shapes) {
     if (h) {
       parser_end(&piece[0].p);
