@@ -137,13 +137,16 @@ static bool render_and_save(const Step *step, const Options *o, Scene *scene,
   }
   int samples = scene->samples;
   bool saved = false;
-#pragma omp parallel sections if (scene->n_instances >= FREE_BESIDE_FROM && omp_get_max_threads() > 1)
-  {
+  if (scene->n_instances >= FREE_BESIDE_FROM && omp_get_max_threads() > 1) {
+#pragma omp parallel sections
+    {
 #pragma omp section
-    saved = image_save(out, film->width, film->height, film->rgb, tm);
+      saved = image_save(out, film->width, film->height, film->rgb, tm);
 #pragma omp section
-    if (scene->n_instances >= FREE_BESIDE_FROM)
       scene_free(scene);
+    }
+  } else { /* not inside a region of one thread: the PNG's bands would get threads of their own */
+    saved = image_save(out, film->width, film->height, film->rgb, tm);
   }
   if (saved && !o->quiet)
     summary(step, out, film, samples, &st);
