@@ -18,6 +18,7 @@
 
 #include "accel/bvh_sah.h"
 #include "accel/morton.h"
+#include "pages.h"
 
 enum {
   CLUSTER_FROM = 16384, /* fewer balls: one build over all of them */
@@ -202,6 +203,8 @@ bool bvh_build(Bvh *bvh, const Ball *balls, int n, int leaf_max)
      * page faults; docs/reliability.md, "Fifth pass"). */
     uint64_t *scratch = (uint64_t *)(void *)b.nodes;
     uint32_t *codes = (uint32_t *)(void *)(scratch + 2 * (size_t)n);
+    pages_populate_parallel(scratch, (size_t)n * (2 * sizeof *scratch + sizeof *codes));
+    pages_populate_parallel(b.ids, (size_t)n * sizeof *b.ids);
     ok = morton_sort(balls, n, b.ids, codes, scratch) &&
          build_clustered(&b, balls, n, codes, &n_nodes);
   } else if (ok && (b.items = malloc((size_t)n * sizeof *b.items))) {
