@@ -29,10 +29,17 @@ static inline vec3s vec_with(vec3s v, int axis, float value)
   return vec_make(axis == 0 ? value : v.x, axis == 1 ? value : v.y, axis == 2 ? value : v.z);
 }
 
+/* fmaxf(a, b) (a NaN loses to a number) without the call to libm that gcc
+ * makes for fmaxf: two compares and a select. */
+static inline float vec_fmax(float a, float b)
+{
+  return a > b || b != b ? a : b;
+}
+
 /* Largest absolute component, |v|_inf. */
 static inline float vec_max_abs(vec3s v)
 {
-  return fmaxf(fabsf(v.x), fmaxf(fabsf(v.y), fabsf(v.z)));
+  return vec_fmax(fabsf(v.x), vec_fmax(fabsf(v.y), fabsf(v.z)));
 }
 
 /* Sum of absolute components, |v|_1. */
