@@ -11,7 +11,7 @@
 
 typedef struct Names {
   int32_t *slot;   /* record index, -1 for an empty slot */
-  uint32_t *hash;  /* the hash of the name in each slot */
+  uint64_t *key;   /* the name in each slot as a number (names.c) */
   size_t cap;      /* a power of two, or 0 */
   size_t count;
 } Names;
