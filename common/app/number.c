@@ -94,11 +94,19 @@ static const double INV10[23] = {1e0,   1e-1,  1e-2,  1e-3,  1e-4,  1e-5,  1e-6,
                                  1e-8,  1e-9,  1e-10, 1e-11, 1e-12, 1e-13, 1e-14, 1e-15,
                                  1e-16, 1e-17, 1e-18, 1e-19, 1e-20, 1e-21, 1e-22};
 
+/* 10^k, exact in float for k <= 10 (5^10 < 2^24). */
+static const float POW10F[11] = {1e0f, 1e1f, 1e2f, 1e3f, 1e4f, 1e5f,
+                                 1e6f, 1e7f, 1e8f, 1e9f, 1e10f};
+
 /* Double ulps around a midpoint between two floats: a double this close to
  * one goes to strtof. */
 enum { NEAR_MIDPOINT = 4 };
 
-/* m 10^e10 is computed in double (m < 2^53 exact): m times the exact 10^e10
+/* m 10^e10 as strtof rounds it. When m < 2^24 and |e10| <= 10, m and
+ * 10^|e10| are both floats, and one float product or quotient is the
+ * correctly rounded value (Clinger's fast path; the scenes' numbers, written
+ * with 6 or 7 significant digits, are such). Otherwise it is computed in
+ * double (m < 2^53 exact): m times the exact 10^e10
  * (one rounding), or m times 10^e10 rounded (two roundings: within 2 double
  * ulps of the true value), then rounded to float. That last rounding gives
  * strtof's float unless a midpoint between two floats lies between the
@@ -109,6 +117,12 @@ static bool convert(bool neg, uint64_t m, int e10, float *out)
 {
   if (m == 0) {
     *out = neg ? -0.0f : 0.0f;
+    return true;
+  }
+  if (m < (1u << 24) && e10 >= -10 && e10 <= 10) {
+    float f = (float)m;
+    f = e10 >= 0 ? f * POW10F[e10] : f / POW10F[-e10];
+    *out = neg ? -f : f;
     return true;
   }
   if (m >= (1ull << 53) || e10 < -22 || e10 > 22)
