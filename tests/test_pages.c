@@ -1,0 +1,87 @@
+/* Fresh memory mapped ahead of the writes (common/pages.h): after
+ * pages_populate the whole pages of the range are resident (mincore) and
+ * what they held is kept; pages outside it stay unmapped. docs/reliability.md,
+ * "Eighth pass". */
+#define _DEFAULT_SOURCE /* mincore, MAP_ANONYMOUS */
+#include "check.h"
+
+#include <errno.h>
+#include <sys/mman.h>
+#include <unistd.h>
+
+#include "pages.h"
+
+#define DOC "docs/reliability.md, \"Eighth pass\""
+
+enum { PAGES = 64 };
+
+/* Resident pages among p[0 .. pages) pages. */
+static int resident(unsigned char *p, int pages, long size)
+{
+  unsigned char in[PAGES];
+  cr_assert(mincore(p, (size_t)pages * (size_t)size, in) == 0);
+  int n = 0;
+  for (int k = 0; k < pages; k++)
+    n += in[k] & 1;
+  return n;
+}
+
+static unsigned char *fresh(long size)
+{
+  void *p = mmap(NULL, (size_t)PAGES * (size_t)size, PROT_READ | PROT_WRITE,
+                 MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+  cr_assert(p != MAP_FAILED);
+  return p;
+}
+
+/* The kernel's MADV_POPULATE_WRITE (Linux 5.14 on); without it
+ * pages_populate does nothing, and these tests have nothing to check. */
+static bool kernel_populates(long size)
+{
+#ifdef MADV_POPULATE_WRITE
+  unsigned char *p = fresh(size);
+  bool ok = madvise(p, (size_t)size, MADV_POPULATE_WRITE) == 0;
+  munmap(p, (size_t)PAGES * (size_t)size);
+  return ok;
+#else
+  (void)size;
+  return false;
+#endif
+}
+
+Test(pages, populate_maps_the_whole_pages_of_the_range)
+{
+  long size = sysconf(_SC_PAGESIZE);
+  if (!kernel_populates(size))
+    cr_skip("this kernel has no MADV_POPULATE_WRITE");
+  Check c = CHECK("pages_populate", DOC);
+  unsigned char *p = fresh(size);
+  CHECK_INT(&c, 0, resident(p, PAGES, size), "resident pages of a fresh mapping");
+  p[10 * size + 5] = 42; /* page 10 written before */
+  /* From the middle of page 8 to the middle of page 20: whole pages 9 to 19. */
+  pages_populate(p + 8 * size + size / 2, (size_t)(12 * size));
+  CHECK_INT(&c, 11, resident(p, PAGES, size),
+            "resident pages after populating pages 9 to 19 (page 10 among them, written before)");
+  unsigned char in[PAGES];
+  cr_assert(mincore(p, (size_t)PAGES * (size_t)size, in) == 0);
+  CHECK_INT(&c, 0, in[8] & 1, "page 8, half in the range: resident (1) or not (0)");
+  CHECK_INT(&c, 0, in[20] & 1, "page 20, half in the range: resident (1) or not (0)");
+  CHECK_INT(&c, 42, p[10 * size + 5], "the byte written before populating");
+  CHECK_INT(&c, 0, p[15 * size], "a populated byte never written");
+  munmap(p, (size_t)PAGES * (size_t)size);
+  CHECK_DONE(&c);
+}
+
+Test(pages, populate_parallel_covers_the_range)
+{
+  long size = sysconf(_SC_PAGESIZE);
+  if (!kernel_populates(size))
+    cr_skip("this kernel has no MADV_POPULATE_WRITE");
+  Check c = CHECK("pages_populate_parallel", DOC);
+  unsigned char *p = fresh(size);
+  pages_populate_parallel(p, (size_t)(48 * size));
+  CHECK_INT(&c, 48, resident(p, PAGES, size), "resident pages after populating pages 0 to 47");
+  pages_populate(NULL, 100); /* nothing to map: no effect, no crash */
+  munmap(p, (size_t)PAGES * (size_t)size);
+  CHECK_DONE(&c);
+}
