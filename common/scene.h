@@ -38,10 +38,7 @@ enum SceneFeature {
 
 /* What scene_prepare found the scene needs, so renderers skip the rest. */
 typedef struct SceneInfo {
-  bool specular;       /* some material has a non-zero specular colour */
   bool ambient;        /* ambient light times some ambient colour is non-zero */
-  int n_point, n_directional, n_area; /* lights kept */
-  int n_spheres, n_planes;            /* lit shapes */
   unsigned ignored;    /* SceneFeature bits present in the scene but not rendered */
 } SceneInfo;
 
