@@ -49,13 +49,21 @@ static bool kernel_populates(long size)
 #endif
 }
 
+/* A fresh mapping of PAGES pages (*size bytes each), or the test skipped
+ * where the kernel cannot populate. */
+static unsigned char *fresh_or_skip(long *size)
+{
+  *size = sysconf(_SC_PAGESIZE);
+  if (!kernel_populates(*size))
+    cr_skip("this kernel has no MADV_POPULATE_WRITE");
+  return fresh(*size);
+}
+
 Test(pages, populate_maps_the_whole_pages_of_the_range)
 {
-  long size = sysconf(_SC_PAGESIZE);
-  if (!kernel_populates(size))
-    cr_skip("this kernel has no MADV_POPULATE_WRITE");
+  long size;
+  unsigned char *p = fresh_or_skip(&size);
   Check c = CHECK("pages_populate", DOC);
-  unsigned char *p = fresh(size);
   CHECK_INT(&c, 0, resident(p, PAGES, size), "resident pages of a fresh mapping");
   p[10 * size + 5] = 42; /* page 10 written before */
   /* From the middle of page 8 to the middle of page 20: whole pages 9 to 19. */
@@ -74,11 +82,9 @@ Test(pages, populate_maps_the_whole_pages_of_the_range)
 
 Test(pages, populate_parallel_covers_the_range)
 {
-  long size = sysconf(_SC_PAGESIZE);
-  if (!kernel_populates(size))
-    cr_skip("this kernel has no MADV_POPULATE_WRITE");
+  long size;
+  unsigned char *p = fresh_or_skip(&size);
   Check c = CHECK("pages_populate_parallel", DOC);
-  unsigned char *p = fresh(size);
   pages_populate_parallel(p, (size_t)(48 * size));
   CHECK_INT(&c, 48, resident(p, PAGES, size), "resident pages after populating pages 0 to 47");
   pages_populate(NULL, 100); /* nothing to map: no effect, no crash */

@@ -75,7 +75,9 @@ struct Cones {
 
 /* ---------------------------------------------------------------- queries */
 
-/* vec_max_abs without libm's fmaxf (a call, per ray here). */
+/* |v|_inf by plain compares, per ray here. Unlike vec_max_abs (common/vec.h)
+ * it promises nothing for a NaN component; the callers' tests are written
+ * !(x <= limit), so that a NaN they see refuses the cone. */
 static float max_abs(vec3s v)
 {
   float x = fabsf(v.x), y = fabsf(v.y), z = fabsf(v.z);
