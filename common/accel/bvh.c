@@ -11,6 +11,7 @@
  * build leaves none. */
 #include "accel/bvh.h"
 
+#include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -71,25 +72,34 @@ static int cluster_leaves(int count, int leaf_max)
                                  cluster_leaves(count - count / 2, leaf_max);
 }
 
-/* The subtree of a cluster (balls ids[first .. first + count), at most
- * CLUSTER neighbours in Morton order): halved by count down to leaves of
- * at most b->leaf_max balls (ids in increasing order), its children's slots
- * from `block` on. Cheap, and for so few balls as good as the heuristic (the
- * trees' surface-area costs differ by about 0.1 %). */
-static void build_cluster(SahBuild *b, const Ball *balls, int node, int first, int count,
-                          int block)
+/* The bounds of balls ids[first .. first + count), and of their centres. */
+static void cluster_bounds(const SahBuild *b, const Ball *balls, int first, int count, Box *box,
+                           Box *cb)
 {
-  Box box = sah_box_empty(), cb = sah_box_empty();
+  *box = *cb = sah_box_empty();
   for (int k = first; k < first + count; k++) {
     Ball ball = balls[b->ids[k]];
     Box it = ball_box(ball), c = {ball, ball};
-    sah_box_grow(&box, &it);
-    sah_box_grow(&cb, &c);
+    sah_box_grow(box, &it);
+    sah_box_grow(cb, &c);
   }
+}
+
+/* The subtree of a cluster (balls ids[first .. first + count), at most
+ * CLUSTER neighbours in Morton order, bounds `box`): halved by count down to
+ * leaves of at most b->leaf_max balls (ids in increasing order), its
+ * children's slots from `block` on. Cheap, and for so few balls as good as
+ * the heuristic (the trees' surface-area costs differ by about 0.1 %). A
+ * node's axis is the one along which its halves' centres lie furthest
+ * apart, the lower half in the first slot of the pair: the traversal visits
+ * the nearer child first by that axis. */
+static void build_cluster(SahBuild *b, const Ball *balls, int node, int first, int count,
+                          int block, const Box *box)
+{
   BvhNode *nd = &b->nodes[node];
   for (int a = 0; a < 3; a++) {
-    nd->lo[a] = box.lo[a];
-    nd->hi[a] = box.hi[a];
+    nd->lo[a] = box->lo[a];
+    nd->hi[a] = box->hi[a];
   }
   if (count <= b->leaf_max) { /* the ids in increasing order */
     for (int i = first + 1; i < first + count; i++)
@@ -102,15 +112,21 @@ static void build_cluster(SahBuild *b, const Ball *balls, int node, int first, i
     nd->meta = count;
     return;
   }
-  int axis = 0, lc = count / 2;
+  int lc = count / 2;
+  Box half[2], cb[2];
+  cluster_bounds(b, balls, first, lc, &half[0], &cb[0]);
+  cluster_bounds(b, balls, first + lc, count - lc, &half[1], &cb[1]);
+  V4 apart = (cb[1].lo + cb[1].hi) - (cb[0].lo + cb[0].hi);
+  int axis = 0;
   for (int a = 1; a < 3; a++)
-    if (cb.hi[a] - cb.lo[a] > cb.hi[axis] - cb.lo[axis])
+    if (fabsf(apart[a]) > fabsf(apart[axis]))
       axis = a;
+  int upper = apart[axis] < 0.0f; /* the slot of the first half: 1 when it is the higher */
   nd->index = block;
   nd->meta = -1 - axis;
-  build_cluster(b, balls, block, first, lc, block + 2);
-  build_cluster(b, balls, block + 1, first + lc, count - lc,
-                block + 2 * cluster_leaves(lc, b->leaf_max));
+  build_cluster(b, balls, block + upper, first, lc, block + 2, &half[0]);
+  build_cluster(b, balls, block + !upper, first + lc, count - lc,
+                block + 2 * cluster_leaves(lc, b->leaf_max), &half[1]);
 }
 
 /* What the build over the clusters needs, one array each (m entries). */
@@ -173,7 +189,7 @@ static bool build_clustered(SahBuild *b, const Ball *balls, int n, const uint32_
 #pragma omp parallel for schedule(dynamic, 256)
     for (int p = 0; p < c.n; p++)
       build_cluster(b, balls, t.leaf_node[p], c.first[t.ids[p]], c.count[t.ids[p]],
-                    t.leaf_block[p]);
+                    t.leaf_block[p], &t.boxes[p]);
   }
   free(c.first);
   free(c.count);

@@ -7,8 +7,9 @@
 #include <stdbool.h>
 
 /* One node, 32 bytes. Inner node: children nodes[index] and nodes[index + 1],
- * meta = -1 - split axis. Leaf: items order[index .. index + meta), meta > 0,
- * in increasing order. */
+ * meta = -1 - the axis they were split along, nodes[index] the lower of the
+ * two along it (the closest-hit traversal visits the nearer first). Leaf:
+ * items order[index .. index + meta), meta > 0, in increasing order. */
 typedef struct BvhNode {
   float lo[3], hi[3]; /* bounds of everything below */
   int index;

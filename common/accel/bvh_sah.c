@@ -166,10 +166,12 @@ static float best_split(const SahBuild *b, int first, int count, const Box *cb,
   return best;
 }
 
-/* The two halves of a split node: where the right one starts, and each
- * half's bounds, bounds of centres (c = lo + hi) and weighted count. */
+/* The two halves of a split node: where the right one starts, the axis
+ * along which the left one is the lower (-1: none, the items halved by
+ * count), and each half's bounds, bounds of centres (c = lo + hi) and
+ * weighted count. */
 typedef struct Halves {
-  int mid;
+  int mid, axis;
   Box box[2], cb[2];
   int weight[2];
 } Halves;
@@ -238,9 +240,11 @@ static bool partition(SahBuild *b, int first, int count, const Box *cb, float ar
     return false;
   if (cost < FLT_MAX) {
     split_items(b, first, count, cb, axis, split_bin, h);
+    h->axis = axis;
     return true;
   }
   halves_empty(h);
+  h->axis = -1;
   h->mid = first + count / 2;
   for (int k = first; k < first + count; k++)
     halves_add(h, k >= h->mid, b, k);
@@ -270,10 +274,16 @@ static void build_node(SahBuild *b, int node, int first, int count, int depth, i
     nd->meta = count;
     return;
   }
-  int axis = 0;
-  for (int a = 1; a < 3; a++)
-    if (cb->hi[a] - cb->lo[a] > cb->hi[axis] - cb->lo[axis])
-      axis = a;
+  /* The axis the traversal orders the children by (nearer first): the
+   * split's, along which the left child is the lower; for a split by count,
+   * the longest of the centres' bounds. */
+  int axis = h.axis;
+  if (axis < 0) {
+    axis = 0;
+    for (int a = 1; a < 3; a++)
+      if (cb->hi[a] - cb->lo[a] > cb->hi[axis] - cb->lo[axis])
+        axis = a;
+  }
   nd->index = block;
   nd->meta = -1 - axis;
   int lc = h.mid - first, lw = h.weight[0];
