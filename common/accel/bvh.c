@@ -2,8 +2,9 @@
  * common/accel/bvh_sah.c over the balls' cubes. Above CLUSTER_FROM balls it
  * runs twice: the balls sorted along a Morton curve are cut into clusters of
  * at most CLUSTER neighbours, the heuristic builds the tree over the
- * clusters, then each cluster's subtree over its own balls (a tenth of the
- * work of one build over 10^6 balls, for trees about as good). Large
+ * clusters (over groups of them first, then inside each group), then each
+ * cluster's subtree over its own balls (a tenth of the work of one build
+ * over 10^6 balls, for trees about as good). Large
  * subtrees are OpenMP tasks; the tree is the same for any thread count: each
  * subtree owns a fixed block of nodes. The blocks of one build over all the
  * balls keep unused slots (where a leaf holds several), squeezed out at the
@@ -24,6 +25,7 @@
 enum {
   CLUSTER_FROM = 16384, /* fewer balls: one build over all of them */
   CLUSTER = 16,         /* most balls in a cluster */
+  GROUP = 256,          /* most balls in a group of clusters */
 };
 
 /* ---------------------------------------------------------------- the build */
@@ -129,16 +131,18 @@ static void build_cluster(SahBuild *b, const Ball *balls, int node, int first, i
                 block + 2 * cluster_leaves(lc, b->leaf_max), &half[1]);
 }
 
-/* What the build over the clusters needs, one array each (m entries). */
+/* What a build over weighted boxes needs (clusters, or groups of them), one
+ * array each (m entries). */
 typedef struct Top {
   Box *boxes;
-  int *ids, *weight, *leaf_node, *leaf_block;
+  int *ids, *weight, *leaf_node, *leaf_block, *leaf_depth, *first, *count;
 } Top;
 
 static bool top_alloc(Top *t, int m)
 {
   t->boxes = malloc((size_t)m * sizeof *t->boxes);
-  int **arrays[] = {&t->ids, &t->weight, &t->leaf_node, &t->leaf_block};
+  int **arrays[] = {&t->ids,        &t->weight, &t->leaf_node, &t->leaf_block,
+                    &t->leaf_depth, &t->first,  &t->count};
   bool ok = t->boxes != NULL;
   for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; k++)
     ok = (*arrays[k] = malloc((size_t)m * sizeof(int))) != NULL && ok;
@@ -148,26 +152,54 @@ static bool top_alloc(Top *t, int m)
 static void top_free(Top *t)
 {
   free(t->boxes);
-  free(t->ids);
-  free(t->weight);
-  free(t->leaf_node);
-  free(t->leaf_block);
+  int *arrays[] = {t->ids, t->weight, t->leaf_node, t->leaf_block, t->leaf_depth, t->first,
+                   t->count};
+  for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; k++)
+    free(arrays[k]);
+}
+
+/* The groups of clusters (Morton runs of at most GROUP balls, each a whole
+ * number of clusters, since the runs are cut at the same bits): in g, each
+ * group's clusters t.first .. t.first + t.count, its bounds and its weight. */
+static void group_clusters(const MortonRuns *gr, const MortonRuns *c, const Top *t, Top *g)
+{
+  for (int k = 0, j = 0; k < gr->n; k++) {
+    g->first[k] = j;
+    g->boxes[k] = sah_box_empty();
+    g->weight[k] = 0;
+    for (; j < c->n && c->first[j] < gr->first[k] + gr->count[k]; j++) {
+      sah_box_grow(&g->boxes[k], &t->boxes[j]);
+      g->weight[k] += t->weight[j];
+    }
+    g->count[k] = j - g->first[k];
+    g->ids[k] = k;
+  }
 }
 
 /* The tree over the clusters of the balls in Morton order (b->ids, codes
  * `sorted`), then each cluster's subtree over its balls; *n_nodes the nodes
  * used. A cluster weighs its subtree's leaves, which sizes its block. The
- * balls stay where they are: leaves index b->ids. */
+ * tree over the clusters is built in two levels, as HLBVH does: the
+ * heuristic over groups of clusters (GROUP neighbouring balls at most),
+ * then in each group over its clusters, all groups at once (the heuristic
+ * over every cluster spent most of its time near the top on one thread).
+ * The balls stay where they are: leaves index b->ids. */
 static bool build_clustered(SahBuild *b, const Ball *balls, int n, const uint32_t *sorted,
                             int *n_nodes)
 {
   int leaves = 0;
   MortonRuns c = {malloc((size_t)n * sizeof(int)), malloc((size_t)n * sizeof(int)), 0};
-  Top t = {0};
+  MortonRuns gr = {0};
+  Top t = {0}, g = {0};
   bool ok = c.first && c.count;
   if (ok) {
     morton_runs(sorted, 0, n, CLUSTER, &c);
-    ok = top_alloc(&t, c.n);
+    gr = (MortonRuns){malloc((size_t)c.n * sizeof(int)), malloc((size_t)c.n * sizeof(int)), 0};
+    ok = gr.first && gr.count && top_alloc(&t, c.n);
+  }
+  if (ok) {
+    morton_runs(sorted, 0, n, GROUP, &gr); /* no more groups than clusters */
+    ok = top_alloc(&g, gr.n);
   }
   if (ok) {
 #pragma omp parallel for schedule(static) reduction(+ : leaves)
@@ -181,11 +213,19 @@ static bool build_clustered(SahBuild *b, const Ball *balls, int n, const uint32_
       leaves += t.weight[k];
       t.ids[k] = k;
     }
-    SahBuild top = {.items = t.boxes, .ids = t.ids, .weight = t.weight, .nodes = b->nodes,
-                    .leaf_max = 1, .leaf_node = t.leaf_node, .leaf_block = t.leaf_block};
+    group_clusters(&gr, &c, &t, &g);
+    SahBuild top = {.items = g.boxes, .ids = g.ids, .weight = g.weight, .nodes = b->nodes,
+                    .leaf_max = 1, .leaf_node = g.leaf_node, .leaf_block = g.leaf_block,
+                    .leaf_depth = g.leaf_depth};
 #pragma omp parallel
 #pragma omp single
-    sah_build_node(&top, 0, 0, c.n, 0, 1);
+    sah_build_node(&top, 0, 0, gr.n, 0, 1);
+    SahBuild mid = {.items = t.boxes, .ids = t.ids, .weight = t.weight, .nodes = b->nodes,
+                    .leaf_max = 1, .leaf_node = t.leaf_node, .leaf_block = t.leaf_block};
+#pragma omp parallel for schedule(dynamic, 16)
+    for (int p = 0; p < gr.n; p++)
+      sah_build_node(&mid, g.leaf_node[p], g.first[g.ids[p]], g.count[g.ids[p]],
+                     g.leaf_depth[p], g.leaf_block[p]);
 #pragma omp parallel for schedule(dynamic, 256)
     for (int p = 0; p < c.n; p++)
       build_cluster(b, balls, t.leaf_node[p], c.first[t.ids[p]], c.count[t.ids[p]],
@@ -193,7 +233,10 @@ static bool build_clustered(SahBuild *b, const Ball *balls, int n, const uint32_
   }
   free(c.first);
   free(c.count);
+  free(gr.first);
+  free(gr.count);
   top_free(&t);
+  top_free(&g);
   *n_nodes = 2 * leaves - 1;
   return ok;
 }

@@ -262,6 +262,8 @@ static void build_node(SahBuild *b, int node, int first, int count, int depth, i
   if (leaf && b->weight) { /* one cluster: its own build fills the node */
     b->leaf_node[first] = node;
     b->leaf_block[first] = block;
+    if (b->leaf_depth)
+      b->leaf_depth[first] = depth;
     return;
   }
   BvhNode *nd = &b->nodes[node];

@@ -20,6 +20,7 @@ typedef struct SahBuild {
   int leaf_max;        /* most items a leaf may hold (1 with weights) */
   bool one_leaf;       /* the root is a leaf of everything */
   int *leaf_node, *leaf_block; /* with weights */
+  int *leaf_depth;     /* with weights, or NULL: each leaf's depth */
 } SahBuild;
 
 /* The empty box (lo > hi), and a box grown to hold x. */
