@@ -61,17 +61,20 @@ static Ray random_ray(const Scene *s, Rng *g)
   return r;
 }
 
-static void check_layout(const char *layout, int n, int rays)
+/* The index's answers for `rays` random rays against the loop's, on the
+ * prepared and indexed scene s (`what` names it in the messages). */
+static void check_answers(const Scene *ps, Rng *gen, const char *what, int rays)
 {
-  setenv("RT_ACCEL", layout, 1);
-  Rng g = rng_make(7, (uint32_t)n, 0);
-  Scene s;
-  random_scene(&s, &g, n);
+  Scene s = *ps;
+  Rng g = *gen;
+  int n = s.n_instances;
   cr_assert(s.index, "accel_build (given code) built no index");
   Check c = CHECK("scene index (given code: common/accel/)",
                   "docs/performance.md, \"The scene queries (common/accel/accel.c, common/accel/bvh.c)\"");
   for (int k = 0; k < rays; k++) {
     Ray r = random_ray(&s, &g);
+    if (k % 4 == 3) /* from the eye: the rays the cones know */
+      r.o = s.camera.eye;
     float tmax = k % 3 ? INFINITY : uni(&g, 0.1f, 20);
     float best = tmax, got = tmax;
     int want = -1;
@@ -83,15 +86,25 @@ static void check_layout(const char *layout, int n, int rays)
       }
     }
     const Instance *hit = s.index->closest(&s, &r, &got);
-    CHECK_INT(&c, want, hit ? (int)(hit - s.instances) : -1, "%s layout, %d spheres, ray %d: "
+    CHECK_INT(&c, want, hit ? (int)(hit - s.instances) : -1, "%s, %d instances, ray %d: "
               "the closest instance (-1: none), as the loop over scene_instance_hit_t says",
-              layout, n, k);
+              what, n, k);
     if (want >= 0)
-      CHECK_NEAR(&c, best, got, 0.0, "%s layout, %d spheres, ray %d: the closest t", layout, n, k);
-    CHECK_INT(&c, want >= 0, s.index->any(&s, &r, tmax), "%s layout, %d spheres, ray %d: any "
-              "hit before tmax", layout, n, k);
+      CHECK_NEAR(&c, best, got, 0.0, "%s, %d instances, ray %d: the closest t", what, n, k);
+    CHECK_INT(&c, want >= 0, s.index->any(&s, &r, tmax), "%s, %d instances, ray %d: any "
+              "hit before tmax", what, n, k);
   }
   CHECK_DONE(&c);
+  *gen = g;
+}
+
+static void check_layout(const char *layout, int n, int rays)
+{
+  setenv("RT_ACCEL", layout, 1);
+  Rng g = rng_make(7, (uint32_t)n, 0);
+  Scene s;
+  random_scene(&s, &g, n);
+  check_answers(&s, &g, layout, rays);
   scene_free(&s);
   unsetenv("RT_ACCEL");
 }
@@ -116,6 +129,48 @@ Test(accel, clustered_hierarchy_gives_the_plain_loops_answers)
   for (int threads = 1; threads <= 3; threads += 2) {
     omp_set_num_threads(threads);
     check_layout("bvh", 40000, 1500);
+  }
+}
+
+/* Scenes of more than 65536 instances are sorted in blocks, and when their
+ * lit spheres are consecutive instances the index keeps no list of them
+ * (common/accel/accel.c, sort_instances): the same answers with the spheres
+ * after the floor, with the floor in their middle, and for a few spheres
+ * after 70 000 planes (the cones' layout). */
+Test(accel, large_scenes_give_the_plain_loops_answers)
+{
+  omp_set_num_threads(2);
+  for (int variant = 0; variant < 3; variant++) {
+    Rng g = rng_make(13, (uint32_t)variant, 0);
+    Scene s;
+    if (variant < 2) {
+      spheres_on_floor(&s, &g, 70000, 30);
+    } else {
+      scene_init(&s);
+      Material m = {.name = "m", .diffuse = vec_make(0.5f, 0.5f, 0.5f)};
+      cr_assert(scene_add_material(&s, &m), "out of memory");
+      for (int k = 0; k < 70000; k++) {
+        Instance pl = {.shape = SHAPE_PLANE, .light = -1,
+                       .plane = plane_make(vec_make(0, -100.0f - (float)k, 0), vec_make(0, 1, 0))};
+        cr_assert(scene_add_instance(&s, &pl), "out of memory");
+      }
+      for (int k = 0; k < 10; k++) {
+        Instance in = {.shape = SHAPE_SPHERE, .light = -1,
+                       .sphere = {vec_make(uni(&g, -5, 5), uni(&g, 0, 3), uni(&g, -5, 5)), 1}};
+        cr_assert(scene_add_instance(&s, &in), "out of memory");
+      }
+    }
+    if (variant == 1) { /* the floor into the middle of the spheres */
+      Instance floor = s.instances[0];
+      s.instances[0] = s.instances[35000];
+      s.instances[35000] = floor;
+    }
+    cr_assert(scene_prepare(&s, SCENE_CAMERA | SCENE_LIGHTS), "out of memory");
+    cr_assert(accel_build(&s), "accel_build (given code) failed");
+    static const char *what[] = {"spheres after the floor", "floor among the spheres",
+                                 "10 spheres after 70000 planes"};
+    check_answers(&s, &g, what[variant], 2000);
+    scene_free(&s);
   }
 }
 

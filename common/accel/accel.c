@@ -235,7 +235,8 @@ static Ball sphere_ball(const Sphere *s)
 /* The hierarchy over the n spheres whose instance indices are ids[] and
  * balls balls[]: one leaf of all of them when `flat`, else binned SAH with
  * leaves of at most LEAF_MAX. Leaves list their spheres in instance order. */
-static bool build_tree(Accel *acc, const int *ids, const Ball *balls, int n, bool flat)
+static bool build_tree(Accel *acc, const int *ids, int base, const Ball *balls, int n,
+                       bool flat)
 {
   Bvh bvh = {0};
   if (!bvh_build(&bvh, balls, n, flat ? n : LEAF_MAX))
@@ -243,7 +244,7 @@ static bool build_tree(Accel *acc, const int *ids, const Ball *balls, int n, boo
   acc->spheres = bvh.order; /* leaf order, as indices into ids: map them */
 #pragma omp parallel for schedule(static) if (n > 65536)
   for (int k = 0; k < n; k++)
-    acc->spheres[k] = ids[acc->spheres[k]];
+    acc->spheres[k] = base >= 0 ? base + acc->spheres[k] : ids[acc->spheres[k]];
   acc->nodes = bvh.nodes;
   return true;
 }
@@ -261,39 +262,53 @@ static bool lit_sphere(const Scene *scene, int k)
  * then filled at its place, so the lists are the same for any thread count
  * (with the balls, each instance's cache line is read twice, not three
  * times, and the sort no longer takes one thread: docs/reliability.md,
- * "Fourth pass"). */
-static int sort_instances(const Scene *scene, Accel *acc, int *ids, Ball *balls)
+ * "Fourth pass"). *base: when a large scene's lit spheres are the instances
+ * base, base + 1, ... (a file of spheres with its planes before or after
+ * them), ids[] is left unwritten, sphere k being instance base + k; else -1. */
+static int sort_instances(const Scene *scene, Accel *acc, int *ids, Ball *balls, int *base)
 {
   int n = scene->n_instances, threads = omp_get_max_threads();
   int blocks = n > 65536 ? (threads < BLOCKS_MAX ? threads : BLOCKS_MAX) : 1;
-  int first[BLOCKS_MAX + 1], spheres[BLOCKS_MAX + 1];
+  int first[BLOCKS_MAX + 1], spheres[BLOCKS_MAX + 1], lo[BLOCKS_MAX], hi[BLOCKS_MAX];
   for (int b = 0; b <= blocks; b++)
     first[b] = (int)((long long)n * b / blocks);
 #pragma omp parallel for schedule(static, 1) if (blocks > 1)
   for (int b = 0; b < blocks; b++) {
-    int count = 0;
+    int count = 0, low = INT_MAX, high = -1; /* in registers: the arrays share a cache line */
     for (int k = first[b]; k < first[b + 1]; k++)
-      count += lit_sphere(scene, k);
+      if (lit_sphere(scene, k)) {
+        count++;
+        low = low < k ? low : k;
+        high = k;
+      }
     spheres[b] = count;
+    lo[b] = low;
+    hi[b] = high;
   }
-  int sum = 0;
+  int sum = 0, lo_all = INT_MAX, hi_all = -1;
   for (int b = 0; b < blocks; b++) { /* spheres[b]: where block b's go */
     int count = spheres[b];
     spheres[b] = sum;
     sum += count;
+    lo_all = lo[b] < lo_all ? lo[b] : lo_all;
+    hi_all = hi[b] > hi_all ? hi[b] : hi_all;
   }
   spheres[blocks] = sum;
+  *base = blocks > 1 && sum > 0 && hi_all - lo_all + 1 == sum ? lo_all : -1;
 #pragma omp parallel for schedule(static, 1) if (blocks > 1)
   for (int b = 0; b < blocks; b++) {
     int s = spheres[b], o = first[b] - spheres[b];
     if (blocks > 1) { /* a large scene: its fresh pages in one call each */
       pages_populate(balls + s, (size_t)(spheres[b + 1] - s) * sizeof *balls);
-      pages_populate(ids + s, (size_t)(spheres[b + 1] - s) * sizeof *ids);
+      if (*base < 0)
+        pages_populate(ids + s, (size_t)(spheres[b + 1] - s) * sizeof *ids);
     }
     for (int k = first[b]; k < first[b + 1]; k++) {
       if (lit_sphere(scene, k)) {
         balls[s] = sphere_ball(&scene->instances[k].sphere);
-        ids[s++] = k;
+        if (*base < 0)
+          ids[s] = k;
+        s++;
       } else {
         acc->others[o++] = k;
       }
@@ -321,12 +336,16 @@ bool accel_build(Scene *scene)
   if (acc)
     acc->others = malloc(room * sizeof *acc->others);
   bool ok = acc && ids && balls && acc->others;
-  int n = ok ? sort_instances(scene, acc, ids, balls) : 0;
+  int base = -1;
+  int n = ok ? sort_instances(scene, acc, ids, balls, &base) : 0;
   if (ok && n > 0)
-    ok = build_tree(acc, ids, balls, n, layout == 1 || (layout < 0 && n <= ACCEL_FLAT_MAX));
+    ok = build_tree(acc, ids, base, balls, n, layout == 1 || (layout < 0 && n <= ACCEL_FLAT_MAX));
   free(balls);
-  if (ok && layout < 0 && n <= ACCEL_FLAT_MAX)
+  if (ok && layout < 0 && n <= ACCEL_FLAT_MAX) {
+    for (int k = 0; base >= 0 && k < n; k++) /* a few spheres among 65 536 other shapes */
+      ids[k] = base + k;
     acc->cones = cones_build(scene, ids, n); /* NULL: the rays go to the leaf */
+  }
   free(ids);
   if (!ok) {
     fprintf(stderr, "accel: out of memory for %d instances\n", scene->n_instances);
