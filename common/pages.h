@@ -16,4 +16,13 @@ void pages_populate(void *p, size_t bytes);
 /* pages_populate in one block per thread of an OpenMP team. */
 void pages_populate_parallel(void *p, size_t bytes);
 
+/* A file mapped read-only at p (page aligned, `bytes` long): its pages
+ * entered in the page table now, one block per thread of an OpenMP team
+ * (MADV_POPULATE_READ), where MAP_POPULATE does it on one thread; and,
+ * ahead of munmap, taken out again the same way (MADV_DONTNEED: the file's
+ * pages stay in the page cache). Hints: where the kernel cannot, the reads
+ * fault the pages in, and munmap takes them out. */
+void pages_map_file_parallel(const void *p, size_t bytes);
+void pages_unmap_file_parallel(const void *p, size_t bytes);
+
 #endif

@@ -1,7 +1,6 @@
 /* A whole file as text (step 02): a large regular file mapped, a smaller one
  * read at its known size, pipes and devices into a growing buffer.
  * docs/scene-format.md. */
-#define _DEFAULT_SOURCE /* MAP_POPULATE */
 #include "app/textfile.h"
 
 #include <errno.h>
@@ -13,6 +12,8 @@
 #include <sys/mman.h>
 #include <sys/stat.h>
 #include <unistd.h>
+
+#include "pages.h"
 
 typedef struct Buf {
   char *s;
@@ -68,14 +69,16 @@ static bool read_all(int fd, size_t hint, size_t max, Buf *b)
 
 enum { MAP_FROM = 8 << 20 }; /* bytes: a regular file this large is mapped */
 
-/* Map the `size` bytes of a regular file, read in at once (MAP_POPULATE):
- * no copy, and about 1 000 page faults for 74 MB where reading into a new
- * buffer takes 18 000 (docs/reliability.md, "Large scenes"). */
+/* Map the `size` bytes of a regular file, its pages entered at once by the
+ * threads (pages_map_file_parallel): no copy, and no page fault, where
+ * reading into a new buffer takes 18 000 for 74 MB (docs/reliability.md,
+ * "Large scenes", "Ninth pass"). */
 static bool map_file(int fd, size_t size, TextFile *f)
 {
-  void *p = mmap(NULL, size, PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd, 0);
+  void *p = mmap(NULL, size, PROT_READ, MAP_PRIVATE, fd, 0);
   if (p == MAP_FAILED)
     return false;
+  pages_map_file_parallel(p, size);
   *f = (TextFile){.text = p, .len = size, .mapped = true};
   return true;
 }
@@ -112,8 +115,10 @@ int textfile_read(const char *path, size_t max, TextFile *f)
 
 void textfile_free(TextFile *f)
 {
-  if (f->mapped)
+  if (f->mapped) {
+    pages_unmap_file_parallel(f->text, f->len);
     munmap(f->text, f->len);
+  }
   else
     free(f->text);
   *f = (TextFile){0};
