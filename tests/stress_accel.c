@@ -135,7 +135,7 @@ Test(accel, clustered_hierarchy_gives_the_plain_loops_answers)
 /* Scenes of more than 65536 instances are sorted in blocks, and when their
  * lit spheres are consecutive instances the index keeps no list of them
  * (common/accel/accel.c, sort_instances): the same answers with the spheres
- * after the floor, with the floor in their middle, and for a few spheres
+ * before the floor, with the floor in their middle, and for a few spheres
  * after 70 000 planes (the cones' layout). */
 Test(accel, large_scenes_give_the_plain_loops_answers)
 {
@@ -144,7 +144,7 @@ Test(accel, large_scenes_give_the_plain_loops_answers)
     Rng g = rng_make(13, (uint32_t)variant, 0);
     Scene s;
     if (variant < 2) {
-      spheres_on_floor(&s, &g, 70000, 30);
+      spheres_on_floor(&s, &g, 70000, 300);
     } else {
       scene_init(&s);
       Material m = {.name = "m", .diffuse = vec_make(0.5f, 0.5f, 0.5f)};
@@ -160,14 +160,15 @@ Test(accel, large_scenes_give_the_plain_loops_answers)
         cr_assert(scene_add_instance(&s, &in), "out of memory");
       }
     }
-    if (variant == 1) { /* the floor into the middle of the spheres */
+    if (variant < 2) { /* the floor after the spheres, or in their middle */
+      int to = variant == 0 ? 70000 : 35000;
       Instance floor = s.instances[0];
-      s.instances[0] = s.instances[35000];
-      s.instances[35000] = floor;
+      s.instances[0] = s.instances[to];
+      s.instances[to] = floor;
     }
     cr_assert(scene_prepare(&s, SCENE_CAMERA | SCENE_LIGHTS), "out of memory");
     cr_assert(accel_build(&s), "accel_build (given code) failed");
-    static const char *what[] = {"spheres after the floor", "floor among the spheres",
+    static const char *what[] = {"spheres before the floor", "floor among the spheres",
                                  "10 spheres after 70000 planes"};
     check_answers(&s, &g, what[variant], 2000);
     scene_free(&s);
