@@ -74,17 +74,15 @@ static int cluster_leaves(int count, int leaf_max)
                                  cluster_leaves(count - count / 2, leaf_max);
 }
 
-/* The bounds of balls ids[first .. first + count), and of their centres. */
-static void cluster_bounds(const SahBuild *b, const Ball *balls, int first, int count, Box *box,
-                           Box *cb)
+/* The bounds of balls ids[first .. first + count). */
+static Box cluster_bounds(const SahBuild *b, const Ball *balls, int first, int count)
 {
-  *box = *cb = sah_box_empty();
+  Box box = sah_box_empty();
   for (int k = first; k < first + count; k++) {
-    Ball ball = balls[b->ids[k]];
-    Box it = ball_box(ball), c = {ball, ball};
-    sah_box_grow(box, &it);
-    sah_box_grow(cb, &c);
+    Box it = ball_box(balls[b->ids[k]]);
+    sah_box_grow(&box, &it);
   }
+  return box;
 }
 
 /* The subtree of a cluster (balls ids[first .. first + count), at most
@@ -92,9 +90,9 @@ static void cluster_bounds(const SahBuild *b, const Ball *balls, int first, int 
  * leaves of at most b->leaf_max balls (ids in increasing order), its
  * children's slots from `block` on. Cheap, and for so few balls as good as
  * the heuristic (the trees' surface-area costs differ by about 0.1 %). A
- * node's axis is the one along which its halves' centres lie furthest
- * apart, the lower half in the first slot of the pair: the traversal visits
- * the nearer child first by that axis. */
+ * node's axis is the one along which its halves' boxes lie furthest apart
+ * (their middles compared), the lower half in the first slot of the pair:
+ * the traversal visits the nearer child first by that axis. */
 static void build_cluster(SahBuild *b, const Ball *balls, int node, int first, int count,
                           int block, const Box *box)
 {
@@ -115,10 +113,9 @@ static void build_cluster(SahBuild *b, const Ball *balls, int node, int first, i
     return;
   }
   int lc = count / 2;
-  Box half[2], cb[2];
-  cluster_bounds(b, balls, first, lc, &half[0], &cb[0]);
-  cluster_bounds(b, balls, first + lc, count - lc, &half[1], &cb[1]);
-  V4 apart = (cb[1].lo + cb[1].hi) - (cb[0].lo + cb[0].hi);
+  Box half[2] = {cluster_bounds(b, balls, first, lc),
+                 cluster_bounds(b, balls, first + lc, count - lc)};
+  V4 apart = (half[1].lo + half[1].hi) - (half[0].lo + half[0].hi);
   int axis = 0;
   for (int a = 1; a < 3; a++)
     if (fabsf(apart[a]) > fabsf(apart[axis]))
