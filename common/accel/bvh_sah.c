@@ -6,6 +6,7 @@
 #include "accel/bvh_sah.h"
 
 #include <float.h>
+#include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -229,9 +230,45 @@ static void split_items(SahBuild *b, int first, int count, const Box *cb, int ax
  * stays a leaf. Falls back to halving by count when the heuristic cannot
  * separate the items (all centres equal) or the tree is already deep (a
  * pathological distribution): depth stays below MAX_DEPTH + log2(n). */
+/* Two items that must be split (a build whose leaves hold one): each alone,
+ * the lower first along the axis where their centres lie furthest apart.
+ * The heuristic has nothing to choose there (either axis that separates them
+ * gives the same two boxes); this skips its bins. */
+static void split_pair(SahBuild *b, int first, Halves *h)
+{
+  V4 apart = (b->items[first + 1].lo + b->items[first + 1].hi) -
+             (b->items[first].lo + b->items[first].hi);
+  int axis = 0;
+  for (int a = 1; a < 3; a++)
+    if (fabsf(apart[a]) > fabsf(apart[axis]))
+      axis = a;
+  if (apart[axis] < 0.0f) {
+    Box tmp = b->items[first];
+    int id = b->ids[first];
+    b->items[first] = b->items[first + 1];
+    b->ids[first] = b->ids[first + 1];
+    b->items[first + 1] = tmp;
+    b->ids[first + 1] = id;
+    if (b->weight) {
+      int w = b->weight[first];
+      b->weight[first] = b->weight[first + 1];
+      b->weight[first + 1] = w;
+    }
+  }
+  halves_empty(h);
+  halves_add(h, 0, b, first);
+  halves_add(h, 1, b, first + 1);
+  h->mid = first + 1;
+  h->axis = axis;
+}
+
 static bool partition(SahBuild *b, int first, int count, const Box *cb, float area,
                       int depth, Halves *h)
 {
+  if (count == 2 && b->leaf_max < 2) {
+    split_pair(b, first, h);
+    return true;
+  }
   int axis = 0, split_bin = 0;
   float cost = depth < MAX_DEPTH && count > 1
                    ? best_split(b, first, count, cb, area, &axis, &split_bin)
