@@ -197,7 +197,7 @@ Test(accel, children_lie_in_order_along_their_axis)
       int inner = 0;
       for (int k = 0; k < bvh.n_nodes; k++) {
         const BvhNode *nd = &bvh.nodes[k];
-        if (nd->meta > 0)
+        if (nd->meta >= 0) /* a leaf (inner nodes: -1 - axis) */
           continue;
         int a = -1 - nd->meta;
         const BvhNode *lo = &bvh.nodes[nd->index], *hi = &bvh.nodes[nd->index + 1];
