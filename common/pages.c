@@ -3,19 +3,54 @@
 #include "pages.h"
 
 #include <omp.h>
+#include <stdbool.h>
 #include <stdint.h>
 #include <sys/mman.h>
 #include <unistd.h>
 
+static uintptr_t page_size(void)
+{
+  long size = sysconf(_SC_PAGESIZE);
+  return size > 0 ? (uintptr_t)size : 4096;
+}
+
+/* The whole pages of p[0 .. bytes): [*first, *end), empty when none. */
+static void whole_pages(const void *p, size_t bytes, uintptr_t *first, uintptr_t *end,
+                        uintptr_t *page)
+{
+  *page = page_size();
+  *first = ((uintptr_t)p + *page - 1) & ~(*page - 1);
+  *end = ((uintptr_t)p + bytes) & ~(*page - 1);
+  if (!p || *end < *first)
+    *end = *first;
+}
+
+/* madvise(advice) over the whole pages of p[0 .. bytes): in one call, or
+ * (`parallel`) one block of whole pages per thread of an OpenMP team. */
+static void advise(const void *p, size_t bytes, int advice, bool parallel)
+{
+  uintptr_t first, end, page;
+  whole_pages(p, bytes, &first, &end, &page);
+  if (!parallel) { /* no OpenMP construct: called from inside parallel loops */
+    if (end > first)
+      madvise((void *)first, end - first, advice);
+    return;
+  }
+  size_t pages = (end - first) / page;
+  int threads = omp_get_max_threads();
+#pragma omp parallel for schedule(static, 1)
+  for (int t = 0; t < threads; t++) {
+    uintptr_t from = first + pages * (size_t)t / (size_t)threads * page;
+    uintptr_t to = first + pages * (size_t)(t + 1) / (size_t)threads * page;
+    if (to > from)
+      madvise((void *)from, to - from, advice);
+  }
+}
+
 void pages_populate(void *p, size_t bytes)
 {
 #ifdef MADV_POPULATE_WRITE
-  long size = sysconf(_SC_PAGESIZE);
-  uintptr_t page = size > 0 ? (uintptr_t)size : 4096;
-  uintptr_t first = ((uintptr_t)p + page - 1) & ~(page - 1);
-  uintptr_t end = ((uintptr_t)p + bytes) & ~(page - 1);
-  if (p && end > first)
-    madvise((void *)first, end - first, MADV_POPULATE_WRITE);
+  advise(p, bytes, MADV_POPULATE_WRITE, false);
 #else
   (void)p;
   (void)bytes;
@@ -24,35 +59,25 @@ void pages_populate(void *p, size_t bytes)
 
 void pages_populate_parallel(void *p, size_t bytes)
 {
-  char *c = p;
-  int threads = omp_get_max_threads();
-#pragma omp parallel for schedule(static, 1)
-  for (int t = 0; t < threads; t++) {
-    size_t from = bytes / (size_t)threads * (size_t)t;
-    size_t to = t + 1 == threads ? bytes : bytes / (size_t)threads * (size_t)(t + 1);
-    pages_populate(c + from, to - from);
-  }
+#ifdef MADV_POPULATE_WRITE
+  advise(p, bytes, MADV_POPULATE_WRITE, true);
+#else
+  (void)p;
+  (void)bytes;
+#endif
 }
 
-/* madvise(advice) over p[0 .. bytes) in one page-aligned block per thread. */
-static void advise_parallel(const void *p, size_t bytes, int advice)
+/* A mapping of `bytes` spans whole pages, its last one included. */
+static size_t mapped_length(size_t bytes)
 {
-  long size = sysconf(_SC_PAGESIZE);
-  size_t page = size > 0 ? (size_t)size : 4096;
-  int threads = omp_get_max_threads();
-#pragma omp parallel for schedule(static, 1)
-  for (int t = 0; t < threads; t++) {
-    size_t from = bytes / (size_t)threads * (size_t)t / page * page;
-    size_t to = t + 1 == threads ? bytes : bytes / (size_t)threads * (size_t)(t + 1) / page * page;
-    if (to > from)
-      madvise((char *)(uintptr_t)p + from, to - from, advice);
-  }
+  size_t page = page_size();
+  return (bytes + page - 1) / page * page;
 }
 
 void pages_map_file_parallel(const void *p, size_t bytes)
 {
 #ifdef MADV_POPULATE_READ
-  advise_parallel(p, bytes, MADV_POPULATE_READ);
+  advise(p, mapped_length(bytes), MADV_POPULATE_READ, true);
 #else
   (void)p;
   (void)bytes;
@@ -61,5 +86,5 @@ void pages_map_file_parallel(const void *p, size_t bytes)
 
 void pages_unmap_file_parallel(const void *p, size_t bytes)
 {
-  advise_parallel(p, bytes, MADV_DONTNEED);
+  advise(p, mapped_length(bytes), MADV_DONTNEED, true);
 }

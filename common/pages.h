@@ -13,7 +13,7 @@
  * the kernel cannot, the writes fault them in as before. */
 void pages_populate(void *p, size_t bytes);
 
-/* pages_populate in one block per thread of an OpenMP team. */
+/* pages_populate in one block of whole pages per thread of an OpenMP team. */
 void pages_populate_parallel(void *p, size_t bytes);
 
 /* A file mapped read-only at p (page aligned, `bytes` long): its pages

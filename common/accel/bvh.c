@@ -12,7 +12,6 @@
  * build leaves none. */
 #include "accel/bvh.h"
 
-#include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -115,12 +114,8 @@ static void build_cluster(SahBuild *b, const Ball *balls, int node, int first, i
   int lc = count / 2;
   Box half[2] = {cluster_bounds(b, balls, first, lc),
                  cluster_bounds(b, balls, first + lc, count - lc)};
-  V4 apart = (half[1].lo + half[1].hi) - (half[0].lo + half[0].hi);
-  int axis = 0;
-  for (int a = 1; a < 3; a++)
-    if (fabsf(apart[a]) > fabsf(apart[axis]))
-      axis = a;
-  int upper = apart[axis] < 0.0f; /* the slot of the first half: 1 when it is the higher */
+  bool second_lower; /* then the first half takes the second slot */
+  int axis = sah_apart_axis(&half[0], &half[1], &second_lower), upper = second_lower;
   nd->index = block;
   nd->meta = -1 - axis;
   build_cluster(b, balls, block + upper, first, lc, block + 2, &half[0]);

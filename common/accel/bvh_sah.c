@@ -195,6 +195,33 @@ static void halves_add(Halves *h, int s, const SahBuild *b, int k)
   h->weight[s] += weight_of(b, k);
 }
 
+/* Items i and j trade places (with their ids and weights). */
+static void swap_items(SahBuild *b, int i, int j)
+{
+  Box tmp = b->items[i];
+  int id = b->ids[i];
+  b->items[i] = b->items[j];
+  b->ids[i] = b->ids[j];
+  b->items[j] = tmp;
+  b->ids[j] = id;
+  if (b->weight) {
+    int w = b->weight[i];
+    b->weight[i] = b->weight[j];
+    b->weight[j] = w;
+  }
+}
+
+int sah_apart_axis(const Box *a, const Box *b, bool *b_lower)
+{
+  V4 apart = (b->lo + b->hi) - (a->lo + a->hi);
+  int axis = 0;
+  for (int k = 1; k < 3; k++)
+    if (fabsf(apart[k]) > fabsf(apart[axis]))
+      axis = k;
+  *b_lower = apart[axis] < 0.0f;
+  return axis;
+}
+
 /* Move the items of bin < split_bin on `axis` to the front, measuring the
  * two halves on the way (each item is looked at once). */
 static void split_items(SahBuild *b, int first, int count, const Box *cb, int axis,
@@ -208,17 +235,7 @@ static void split_items(SahBuild *b, int first, int count, const Box *cb, int ax
       halves_add(h, 0, b, i);
       i++;
     } else {
-      Box tmp = b->items[i];
-      int id = b->ids[i];
-      b->items[i] = b->items[j];
-      b->ids[i] = b->ids[j];
-      b->items[j] = tmp;
-      b->ids[j] = id;
-      if (b->weight) {
-        int w = b->weight[i];
-        b->weight[i] = b->weight[j];
-        b->weight[j] = w;
-      }
+      swap_items(b, i, j);
       halves_add(h, 1, b, j);
       j--;
     }
@@ -236,25 +253,10 @@ static void split_items(SahBuild *b, int first, int count, const Box *cb, int ax
  * gives the same two boxes); this skips its bins. */
 static void split_pair(SahBuild *b, int first, Halves *h)
 {
-  V4 apart = (b->items[first + 1].lo + b->items[first + 1].hi) -
-             (b->items[first].lo + b->items[first].hi);
-  int axis = 0;
-  for (int a = 1; a < 3; a++)
-    if (fabsf(apart[a]) > fabsf(apart[axis]))
-      axis = a;
-  if (apart[axis] < 0.0f) {
-    Box tmp = b->items[first];
-    int id = b->ids[first];
-    b->items[first] = b->items[first + 1];
-    b->ids[first] = b->ids[first + 1];
-    b->items[first + 1] = tmp;
-    b->ids[first + 1] = id;
-    if (b->weight) {
-      int w = b->weight[first];
-      b->weight[first] = b->weight[first + 1];
-      b->weight[first + 1] = w;
-    }
-  }
+  bool second_lower;
+  int axis = sah_apart_axis(&b->items[first], &b->items[first + 1], &second_lower);
+  if (second_lower)
+    swap_items(b, first, first + 1);
   halves_empty(h);
   halves_add(h, 0, b, first);
   halves_add(h, 1, b, first + 1);

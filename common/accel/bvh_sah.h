@@ -27,6 +27,11 @@ typedef struct SahBuild {
 Box sah_box_empty(void);
 void sah_box_grow(Box *b, const Box *x);
 
+/* The axis along which the middles of boxes a and b lie furthest apart;
+ * *b_lower: b's middle is the lower along it. Two children split without
+ * the heuristic go lower first by that axis (bvh.h). */
+int sah_apart_axis(const Box *a, const Box *b, bool *b_lower);
+
 /* Build node `node` over items [first, first + count) at `depth`; its
  * descendants go to the slots from `block` on (the left child's c_l items in
  * the 2 c_l - 2 after the pair, the right child's after them). Subtrees of
