@@ -172,7 +172,7 @@ Test(number, reads_only_the_bytes_it_is_given)
 /* number_prefix, as the parser's fast path calls it: on the scene text, which
  * goes on after the word. Each random word is followed by a byte that ends
  * it (a space, a newline, '#') or may continue it ('.', 'e', a digit,
- * 'x'), then 20 more bytes; where number_prefix reads a number, it must be
+ * 'x'), then 20 more bytes (the reader looks at 8 bytes at a time); where number_prefix reads a number, it must be
  * number_parse's float for the bytes it read, and it must stop at the end of
  * a word the next byte ends. Plain decimals of fewer than 8 digits on each
  * side of the point, as scenes write them (%g, %.6f), must be read. */
@@ -199,8 +199,8 @@ Test(number, prefix_reads_as_number_parse_up_to_where_it_stops, .timeout = 60)
     char end = after[next(&s) % (sizeof after - 1)];
     memcpy(text, word, (size_t)len);
     text[len] = end;
-    for (int j = 1; j <= 20; j++)
-      text[len + j] = (char)(' ' + next(&s) % 95);
+    for (int j = 1; j <= 20; j++) /* printable, or in a third of the words any byte */
+      text[len + j] = (char)(k % 3 ? ' ' + next(&s) % 95 : 1 + next(&s) % 255);
     float got = 0.0f, want = 0.0f;
     const char *stop = number_prefix(text, text + len + 21, &got);
     bool ends = end == ' ' || end == '\n' || end == '#';
