@@ -215,6 +215,83 @@ Test(accel, children_lie_in_order_along_their_axis)
   CHECK_DONE(&c);
 }
 
+/* Walk the subtree at `node`: each slot entered once (seen), each node's box
+ * holding its children's or its balls' cubes, each ball in one leaf
+ * (covered). Returns the nodes entered. */
+static int walk(Check *c, const Bvh *bvh, const Ball *balls, int node, int depth,
+                unsigned char *seen, unsigned char *covered)
+{
+  CHECK_REQUIRE(c, node >= 0 && node < bvh->n_nodes && depth < 100,
+                "node %d (depth %d): expected a slot below %d", node, depth, bvh->n_nodes);
+  CHECK_REQUIRE(c, !seen[node], "node %d is the child of two nodes", node);
+  seen[node] = 1;
+  const BvhNode *nd = &bvh->nodes[node];
+  if (nd->meta > 0) {
+    CHECK_REQUIRE(c, nd->index >= 0 && nd->index + nd->meta <= bvh->n_items,
+                  "leaf %d: items %d .. %d, expected within 0 .. %d", node, nd->index,
+                  nd->index + nd->meta, bvh->n_items);
+    for (int k = nd->index; k < nd->index + nd->meta; k++) {
+      int id = bvh->order[k];
+      CHECK_REQUIRE(c, id >= 0 && id < bvh->n_items && !covered[id],
+                    "leaf %d: ball %d is in two leaves (or out of range)", node, id);
+      covered[id] = 1;
+      Box box = ball_box(balls[id]);
+      for (int a = 0; a < 3; a++)
+        CHECK_REQUIRE(c, nd->lo[a] <= box.lo[a] && box.hi[a] <= nd->hi[a],
+                      "leaf %d, axis %d: [%.9g, %.9g] does not hold ball %d's cube "
+                      "[%.9g, %.9g]", node, a, nd->lo[a], nd->hi[a], id, box.lo[a], box.hi[a]);
+    }
+    return 1;
+  }
+  int entered = 1;
+  for (int s = 0; s < 2; s++) {
+    const BvhNode *ch = &bvh->nodes[nd->index + s];
+    for (int a = 0; a < 3; a++)
+      CHECK_REQUIRE(c, nd->lo[a] <= ch->lo[a] && ch->hi[a] <= nd->hi[a],
+                    "node %d, axis %d: [%.9g, %.9g] does not hold child %d's [%.9g, %.9g]",
+                    node, a, nd->lo[a], nd->hi[a], nd->index + s, ch->lo[a], ch->hi[a]);
+    entered += walk(c, bvh, balls, nd->index + s, depth + 1, seen, covered);
+  }
+  return entered;
+}
+
+/* The tree's shape, whatever its layout in the array: every slot one node
+ * of the tree, entered from the root once, and every ball in one leaf under
+ * boxes that hold it; for one build over all the balls and for the
+ * clustered build (more than 16384), with leaves of 1 to 4. */
+Test(accel, every_slot_is_one_node_and_every_ball_in_one_leaf)
+{
+  Check c = CHECK("bvh_build (given code: common/accel/bvh.c)",
+                  "docs/performance.md, \"The scene queries (common/accel/accel.c, common/accel/bvh.c)\"");
+  static const int sizes[] = {1000, 40000};
+  for (int s = 0; s < 2; s++)
+    for (int leaf = 1; leaf <= 4; leaf += 3) {
+      int n = sizes[s];
+      Rng g = rng_make(12, (uint32_t)n, (uint32_t)leaf);
+      Ball *balls = malloc((size_t)n * sizeof *balls);
+      unsigned char *covered = calloc((size_t)n, 1), *seen = calloc(2 * (size_t)n, 1);
+      cr_assert(balls && covered && seen, "out of memory");
+      for (int k = 0; k < n; k++) /* clumps, some balls on one spot */
+        balls[k] = k % 13 == 3 ? balls[k - 1]
+                               : (Ball){uni(&g, -10, 10) * (k % 3 ? 1.0f : 0.01f),
+                                        uni(&g, 0, 2), uni(&g, -10, 10), uni(&g, 1e-3f, 0.3f)};
+      Bvh bvh;
+      cr_assert(bvh_build(&bvh, balls, n, leaf), "bvh_build: out of memory");
+      int entered = walk(&c, &bvh, balls, 0, 0, seen, covered);
+      CHECK_INT(&c, bvh.n_nodes, entered, "%d balls, leaves of at most %d: nodes entered from "
+                "the root, against n_nodes", n, leaf);
+      int missing = 0;
+      for (int k = 0; k < n; k++)
+        missing += !covered[k];
+      CHECK_INT(&c, 0, missing, "%d balls, leaves of at most %d: balls in no leaf", n, leaf);
+      bvh_free(&bvh);
+      free(balls);
+      free(covered);
+      free(seen);
+    }
+  CHECK_DONE(&c);
+}
+
 /* ------------------------------------------------------------------ cones */
 
 /* The plain loop's answers: the closest instance (first of equal distances)

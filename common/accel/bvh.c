@@ -1,15 +1,16 @@
 /* BVH build (docs/performance.md): the binned surface area heuristic of
  * common/accel/bvh_sah.c over the balls' cubes. Above CLUSTER_FROM balls it
  * runs twice: the balls sorted along a Morton curve are cut into clusters of
- * at most CLUSTER neighbours, the heuristic builds the tree over the
- * clusters (over groups of them first, then inside each group), then each
- * cluster's subtree over its own balls (a tenth of the work of one build
- * over 10^6 balls, for trees about as good). Large
+ * at most CLUSTER neighbours, each cluster's subtree is built over its own
+ * balls, then the heuristic builds the tree over the clusters' bounds (over
+ * groups of them first, then inside each group): a tenth of the work of one
+ * build over 10^6 balls, for trees about as good. Large
  * subtrees are OpenMP tasks; the tree is the same for any thread count: each
  * subtree owns a fixed block of nodes. The blocks of one build over all the
  * balls keep unused slots (where a leaf holds several), squeezed out at the
- * end; a cluster's block is sized by its subtree's leaves, so the clustered
- * build leaves none. */
+ * end; the clustered build leaves none: the tree over the clusters takes
+ * the first slots, and each cluster's descendants (as many as its subtree
+ * needs) follow, cluster by cluster. */
 #include "accel/bvh.h"
 
 #include <stdint.h>
@@ -65,7 +66,7 @@ static bool squeeze(BvhNode **nodes, int n, int *n_nodes)
   return true;
 }
 
-/* Leaves of a cluster's subtree over `count` balls (build_cluster's halving
+/* Leaves of a cluster's subtree over `count` balls (cluster_node's halving
  * down to at most leaf_max balls a leaf): the subtree has 2 leaves - 1 nodes. */
 static int cluster_leaves(int count, int leaf_max)
 {
@@ -73,33 +74,25 @@ static int cluster_leaves(int count, int leaf_max)
                                  cluster_leaves(count - count / 2, leaf_max);
 }
 
-/* The bounds of balls ids[first .. first + count). */
-static Box cluster_bounds(const SahBuild *b, const Ball *balls, int first, int count)
+/* A node's bounds as a Box. */
+static Box node_box(const BvhNode *nd)
 {
-  Box box = sah_box_empty();
-  for (int k = first; k < first + count; k++) {
-    Box it = ball_box(balls[b->ids[k]]);
-    sah_box_grow(&box, &it);
-  }
-  return box;
+  return (Box){{nd->lo[0], nd->lo[1], nd->lo[2], 0.0f}, {nd->hi[0], nd->hi[1], nd->hi[2], 0.0f}};
 }
 
-/* The subtree of a cluster (balls ids[first .. first + count), at most
- * CLUSTER neighbours in Morton order, bounds `box`): halved by count down to
- * leaves of at most b->leaf_max balls (ids in increasing order), its
- * children's slots from `block` on. Cheap, and for so few balls as good as
- * the heuristic (the trees' surface-area costs differ by about 0.1 %). A
- * node's axis is the one along which its halves' boxes lie furthest apart
- * (their middles compared), the lower half in the first slot of the pair:
- * the traversal visits the nearer child first by that axis. */
-static void build_cluster(SahBuild *b, const Ball *balls, int node, int first, int count,
-                          int block, const Box *box)
+/* The subtree of a cluster's balls ids[first .. first + count) (at most
+ * CLUSTER neighbours in Morton order), halved by count down to leaves of at
+ * most b->leaf_max balls (ids in increasing order): its descendants written
+ * from slot `block` on (the first half's below the pair, then the second
+ * half's), its root returned for the caller to place. Built from the leaves
+ * up, each ball read once: a node's bounds are its children's. Cheap, and
+ * for so few balls as good as the heuristic (the trees' surface-area costs
+ * differ by about 0.1 %). A node's axis is the one along which its halves'
+ * boxes lie furthest apart (their middles compared), the lower half in the
+ * first slot of the pair: the traversal visits the nearer child first by
+ * that axis. */
+static BvhNode cluster_node(SahBuild *b, const Ball *balls, int first, int count, int block)
 {
-  BvhNode *nd = &b->nodes[node];
-  for (int a = 0; a < 3; a++) {
-    nd->lo[a] = box->lo[a];
-    nd->hi[a] = box->hi[a];
-  }
   if (count <= b->leaf_max) { /* the ids in increasing order */
     for (int i = first + 1; i < first + count; i++)
       for (int j = i; j > first && b->ids[j - 1] > b->ids[j]; j--) {
@@ -107,33 +100,40 @@ static void build_cluster(SahBuild *b, const Ball *balls, int node, int first, i
         b->ids[j] = b->ids[j - 1];
         b->ids[j - 1] = id;
       }
-    nd->index = first;
-    nd->meta = count;
-    return;
+    Box box = sah_box_empty();
+    for (int k = first; k < first + count; k++) {
+      Box it = ball_box(balls[b->ids[k]]);
+      sah_box_grow(&box, &it);
+    }
+    return (BvhNode){{box.lo[0], box.lo[1], box.lo[2]}, {box.hi[0], box.hi[1], box.hi[2]},
+                     first, count};
   }
   int lc = count / 2;
-  Box half[2] = {cluster_bounds(b, balls, first, lc),
-                 cluster_bounds(b, balls, first + lc, count - lc)};
+  BvhNode half[2] = {
+      cluster_node(b, balls, first, lc, block + 2),
+      cluster_node(b, balls, first + lc, count - lc,
+                   block + 2 * cluster_leaves(lc, b->leaf_max))};
+  Box box[2] = {node_box(&half[0]), node_box(&half[1])};
   bool second_lower; /* then the first half takes the second slot */
-  int axis = sah_apart_axis(&half[0], &half[1], &second_lower), upper = second_lower;
-  nd->index = block;
-  nd->meta = -1 - axis;
-  build_cluster(b, balls, block + upper, first, lc, block + 2, &half[0]);
-  build_cluster(b, balls, block + !upper, first + lc, count - lc,
-                block + 2 * cluster_leaves(lc, b->leaf_max), &half[1]);
+  int axis = sah_apart_axis(&box[0], &box[1], &second_lower);
+  b->nodes[block + second_lower] = half[0];
+  b->nodes[block + !second_lower] = half[1];
+  sah_box_grow(&box[0], &box[1]);
+  return (BvhNode){{box[0].lo[0], box[0].lo[1], box[0].lo[2]},
+                   {box[0].hi[0], box[0].hi[1], box[0].hi[2]}, block, -1 - axis};
 }
 
 /* What a build over weighted boxes needs (clusters, or groups of them), one
  * array each (m entries). */
 typedef struct Top {
   Box *boxes;
-  int *ids, *weight, *leaf_node, *leaf_block, *leaf_depth, *first, *count;
+  int *ids, *weight, *size, *leaf_node, *leaf_block, *leaf_depth, *first, *count;
 } Top;
 
 static bool top_alloc(Top *t, int m)
 {
   t->boxes = malloc((size_t)m * sizeof *t->boxes);
-  int **arrays[] = {&t->ids,        &t->weight, &t->leaf_node, &t->leaf_block,
+  int **arrays[] = {&t->ids,        &t->weight, &t->size,  &t->leaf_node, &t->leaf_block,
                     &t->leaf_depth, &t->first,  &t->count};
   bool ok = t->boxes != NULL;
   for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; k++)
@@ -144,15 +144,16 @@ static bool top_alloc(Top *t, int m)
 static void top_free(Top *t)
 {
   free(t->boxes);
-  int *arrays[] = {t->ids, t->weight, t->leaf_node, t->leaf_block, t->leaf_depth, t->first,
-                   t->count};
+  int *arrays[] = {t->ids,        t->weight, t->size,  t->leaf_node, t->leaf_block,
+                   t->leaf_depth, t->first,  t->count};
   for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; k++)
     free(arrays[k]);
 }
 
 /* The groups of clusters (Morton runs of at most GROUP balls, each a whole
  * number of clusters, since the runs are cut at the same bits): in g, each
- * group's clusters t.first .. t.first + t.count, its bounds and its weight. */
+ * group's clusters g.first .. g.first + g.count, its bounds, its weight and
+ * its size (its clusters: the tree over them takes 2 count - 1 slots). */
 static void group_clusters(const MortonRuns *gr, const MortonRuns *c, const Top *t, Top *g)
 {
   for (int k = 0, j = 0; k < gr->n; k++) {
@@ -163,19 +164,23 @@ static void group_clusters(const MortonRuns *gr, const MortonRuns *c, const Top 
       sah_box_grow(&g->boxes[k], &t->boxes[j]);
       g->weight[k] += t->weight[j];
     }
-    g->count[k] = j - g->first[k];
+    g->count[k] = g->size[k] = j - g->first[k];
     g->ids[k] = k;
   }
 }
 
-/* The tree over the clusters of the balls in Morton order (b->ids, codes
- * `sorted`), then each cluster's subtree over its balls; *n_nodes the nodes
- * used. A cluster weighs its subtree's leaves, which sizes its block. The
- * tree over the clusters is built in two levels, as HLBVH does: the
- * heuristic over groups of clusters (GROUP neighbouring balls at most),
- * then in each group over its clusters, all groups at once (the heuristic
- * over every cluster spent most of its time near the top on one thread).
- * The balls stay where they are: leaves index b->ids. */
+/* Each cluster's subtree over its balls, then the tree over the clusters of
+ * the balls in Morton order (b->ids, codes `sorted`); *n_nodes the nodes
+ * used. The tree over the C clusters takes slots 0 .. 2 C - 2, each
+ * cluster's root one of them; the clusters' descendants follow, cluster by
+ * cluster in Morton order, so that they are built first, at their place,
+ * and give the tree above their bounds. A cluster weighs its subtree's
+ * leaves in the heuristic. The tree over the clusters is built in two
+ * levels, as HLBVH does: the heuristic over groups of clusters (GROUP
+ * neighbouring balls at most), then in each group over its clusters, all
+ * groups at once (the heuristic over every cluster spent most of its time
+ * near the top on one thread). The balls stay where they are: leaves index
+ * b->ids. */
 static bool build_clustered(SahBuild *b, const Ball *balls, int n, const uint32_t *sorted,
                             int *n_nodes)
 {
@@ -193,22 +198,28 @@ static bool build_clustered(SahBuild *b, const Ball *balls, int n, const uint32_
     morton_runs(sorted, 0, n, GROUP, &gr); /* no more groups than clusters */
     ok = top_alloc(&g, gr.n);
   }
-  if (ok) {
-#pragma omp parallel for schedule(static) reduction(+ : leaves)
-    for (int k = 0; k < c.n; k++) {
-      t.boxes[k] = sah_box_empty();
-      for (int j = c.first[k]; j < c.first[k] + c.count[k]; j++) {
-        Box it = ball_box(balls[b->ids[j]]);
-        sah_box_grow(&t.boxes[k], &it);
-      }
-      t.weight[k] = cluster_leaves(c.count[k], b->leaf_max);
+  if (ok) { /* the codes (in the node array) are read no more */
+    int per[CLUSTER + 1]; /* a cluster's leaves, by its count */
+    for (int m = 0; m <= CLUSTER; m++)
+      per[m] = cluster_leaves(m, b->leaf_max);
+    for (int k = 0, block = 2 * c.n - 1; k < c.n; k++) { /* t.first: its descendants */
+      t.weight[k] = per[c.count[k]];
+      t.first[k] = block;
+      block += 2 * t.weight[k] - 2;
       leaves += t.weight[k];
+    }
+#pragma omp parallel for schedule(dynamic, 256)
+    for (int k = 0; k < c.n; k++) { /* the root kept in t: box, index, meta */
+      BvhNode root = cluster_node(b, balls, c.first[k], c.count[k], t.first[k]);
+      t.boxes[k] = node_box(&root);
+      t.first[k] = root.index;
+      t.count[k] = root.meta;
       t.ids[k] = k;
     }
     group_clusters(&gr, &c, &t, &g);
-    SahBuild top = {.items = g.boxes, .ids = g.ids, .weight = g.weight, .nodes = b->nodes,
-                    .leaf_max = 1, .leaf_node = g.leaf_node, .leaf_block = g.leaf_block,
-                    .leaf_depth = g.leaf_depth};
+    SahBuild top = {.items = g.boxes, .ids = g.ids, .weight = g.weight, .size = g.size,
+                    .nodes = b->nodes, .leaf_max = 1, .leaf_node = g.leaf_node,
+                    .leaf_block = g.leaf_block, .leaf_depth = g.leaf_depth};
 #pragma omp parallel
 #pragma omp single
     sah_build_node(&top, 0, 0, gr.n, 0, 1);
@@ -218,10 +229,16 @@ static bool build_clustered(SahBuild *b, const Ball *balls, int n, const uint32_
     for (int p = 0; p < gr.n; p++)
       sah_build_node(&mid, g.leaf_node[p], g.first[g.ids[p]], g.count[g.ids[p]],
                      g.leaf_depth[p], g.leaf_block[p]);
-#pragma omp parallel for schedule(dynamic, 256)
-    for (int p = 0; p < c.n; p++)
-      build_cluster(b, balls, t.leaf_node[p], c.first[t.ids[p]], c.count[t.ids[p]],
-                    t.leaf_block[p], &t.boxes[p]);
+#pragma omp parallel for schedule(static)
+    for (int p = 0; p < c.n; p++) { /* each cluster's root at its leaf's slot */
+      BvhNode *nd = &b->nodes[t.leaf_node[p]];
+      for (int a = 0; a < 3; a++) {
+        nd->lo[a] = t.boxes[p].lo[a];
+        nd->hi[a] = t.boxes[p].hi[a];
+      }
+      nd->index = t.first[t.ids[p]];
+      nd->meta = t.count[t.ids[p]];
+    }
   }
   free(c.first);
   free(c.count);
