@@ -258,7 +258,8 @@ static int walk(Check *c, const Bvh *bvh, const Ball *balls, int node, int depth
 /* The tree's shape, whatever its layout in the array: every slot one node
  * of the tree, entered from the root once, and every ball in one leaf under
  * boxes that hold it; for one build over all the balls and for the
- * clustered build (more than 16384), with leaves of 1 to 4. */
+ * clustered build (more than 16384), with leaves of 1 to 4. And the same
+ * tree, byte for byte, built with 1 and with 3 threads. */
 Test(accel, every_slot_is_one_node_and_every_ball_in_one_leaf)
 {
   Check c = CHECK("bvh_build (given code: common/accel/bvh.c)",
@@ -276,6 +277,7 @@ Test(accel, every_slot_is_one_node_and_every_ball_in_one_leaf)
                                : (Ball){uni(&g, -10, 10) * (k % 3 ? 1.0f : 0.01f),
                                         uni(&g, 0, 2), uni(&g, -10, 10), uni(&g, 1e-3f, 0.3f)};
       Bvh bvh;
+      int first_threads = omp_get_max_threads();
       cr_assert(bvh_build(&bvh, balls, n, leaf), "bvh_build: out of memory");
       int entered = walk(&c, &bvh, balls, 0, 0, seen, covered);
       CHECK_INT(&c, bvh.n_nodes, entered, "%d balls, leaves of at most %d: nodes entered from "
@@ -284,6 +286,19 @@ Test(accel, every_slot_is_one_node_and_every_ball_in_one_leaf)
       for (int k = 0; k < n; k++)
         missing += !covered[k];
       CHECK_INT(&c, 0, missing, "%d balls, leaves of at most %d: balls in no leaf", n, leaf);
+      for (int threads = 1; threads <= 3; threads += 2) { /* bvh.h: any thread count */
+        omp_set_num_threads(threads);
+        Bvh again;
+        cr_assert(bvh_build(&again, balls, n, leaf), "bvh_build: out of memory");
+        bool same = again.n_nodes == bvh.n_nodes &&
+                    !memcmp(again.nodes, bvh.nodes, (size_t)bvh.n_nodes * sizeof *bvh.nodes) &&
+                    !memcmp(again.order, bvh.order, (size_t)n * sizeof *bvh.order);
+        CHECK_THAT(&c, same, "%d balls, leaves of at most %d: the tree built with %d thread%s "
+                   "differs from the one built with %d", n, leaf, threads, threads > 1 ? "s" : "",
+                   first_threads);
+        bvh_free(&again);
+      }
+      omp_set_num_threads(2);
       bvh_free(&bvh);
       free(balls);
       free(covered);

@@ -13,6 +13,7 @@
  * needs) follow, cluster by cluster. */
 #include "accel/bvh.h"
 
+#include <omp.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -150,21 +151,57 @@ static void top_free(Top *t)
     free(arrays[k]);
 }
 
-/* The groups of clusters (Morton runs of at most GROUP balls, each a whole
- * number of clusters, since the runs are cut at the same bits): in g, each
- * group's clusters g.first .. g.first + g.count, its bounds, its weight and
- * its size (its clusters: the tree over them takes 2 count - 1 slots). */
-static void group_clusters(const MortonRuns *gr, const MortonRuns *c, const Top *t, Top *g)
+enum { CUT_PARTS = 256 }; /* most threads cutting clusters at once */
+
+/* The clusters (Morton runs of at most CLUSTER balls) of every group (runs of
+ * at most GROUP: each a whole number of clusters, since both are cut at the
+ * same bits), the groups shared among the threads in consecutive parts:
+ * each part's clusters written from its first ball's place in c->first and
+ * c->count (a part has no more clusters than balls, and the pages touched
+ * are those of its clusters), then the parts packed in order. The same
+ * clusters for any number of threads. In g, each group's clusters g.first
+ * .. g.first + g.count. */
+static void cut_clusters(const uint32_t *sorted, const MortonRuns *gr, MortonRuns *c, Top *g)
 {
-  for (int k = 0, j = 0; k < gr->n; k++) {
+  int at[CUT_PARTS], count[CUT_PARTS], parts = omp_get_max_threads();
+  parts = parts < CUT_PARTS ? parts : CUT_PARTS;
+#pragma omp parallel num_threads(parts)
+  {
+    int t = omp_get_thread_num(), used = omp_get_num_threads();
+    int k0 = (int)((long long)gr->n * t / used), k1 = (int)((long long)gr->n * (t + 1) / used);
+    at[t] = k0 < gr->n ? gr->first[k0] : 0;
+    MortonRuns mine = {c->first + at[t], c->count + at[t], 0};
+    for (int k = k0; k < k1; k++) {
+      int before = mine.n;
+      morton_runs(sorted, gr->first[k], gr->count[k], CLUSTER, &mine);
+      g->count[k] = mine.n - before;
+    }
+    count[t] = mine.n;
+#pragma omp single
+    parts = used;
+  }
+  c->n = 0;
+  for (int t = 0; t < parts; t++) { /* down: part t starts at or after c->n */
+    memmove(c->first + c->n, c->first + at[t], (size_t)count[t] * sizeof(int));
+    memmove(c->count + c->n, c->count + at[t], (size_t)count[t] * sizeof(int));
+    c->n += count[t];
+  }
+  for (int k = 0, j = 0; k < gr->n; j += g->count[k++])
     g->first[k] = j;
+}
+
+/* Each group's bounds, weight and size (its clusters: the tree over them
+ * takes 2 count - 1 slots), from its clusters' in t. */
+static void group_clusters(const MortonRuns *gr, const Top *t, Top *g)
+{
+  for (int k = 0; k < gr->n; k++) {
     g->boxes[k] = sah_box_empty();
     g->weight[k] = 0;
-    for (; j < c->n && c->first[j] < gr->first[k] + gr->count[k]; j++) {
+    for (int j = g->first[k]; j < g->first[k] + g->count[k]; j++) {
       sah_box_grow(&g->boxes[k], &t->boxes[j]);
       g->weight[k] += t->weight[j];
     }
-    g->count[k] = g->size[k] = j - g->first[k];
+    g->size[k] = g->count[k];
     g->ids[k] = k;
   }
 }
@@ -188,15 +225,15 @@ static bool build_clustered(SahBuild *b, const Ball *balls, int n, const uint32_
   MortonRuns c = {malloc((size_t)n * sizeof(int)), malloc((size_t)n * sizeof(int)), 0};
   MortonRuns gr = {0};
   Top t = {0}, g = {0};
-  bool ok = c.first && c.count;
-  if (ok) {
-    morton_runs(sorted, 0, n, CLUSTER, &c);
-    gr = (MortonRuns){malloc((size_t)c.n * sizeof(int)), malloc((size_t)c.n * sizeof(int)), 0};
-    ok = gr.first && gr.count && top_alloc(&t, c.n);
+  gr = (MortonRuns){malloc((size_t)n * sizeof(int)), malloc((size_t)n * sizeof(int)), 0};
+  bool ok = c.first && c.count && gr.first && gr.count;
+  if (ok) { /* the groups (only the pages they write are touched), then their clusters */
+    morton_runs(sorted, 0, n, GROUP, &gr);
+    ok = top_alloc(&g, gr.n);
   }
   if (ok) {
-    morton_runs(sorted, 0, n, GROUP, &gr); /* no more groups than clusters */
-    ok = top_alloc(&g, gr.n);
+    cut_clusters(sorted, &gr, &c, &g);
+    ok = top_alloc(&t, c.n);
   }
   if (ok) { /* the codes (in the node array) are read no more */
     int per[CLUSTER + 1]; /* a cluster's leaves, by its count */
@@ -216,7 +253,7 @@ static bool build_clustered(SahBuild *b, const Ball *balls, int n, const uint32_
       t.count[k] = root.meta;
       t.ids[k] = k;
     }
-    group_clusters(&gr, &c, &t, &g);
+    group_clusters(&gr, &t, &g);
     SahBuild top = {.items = g.boxes, .ids = g.ids, .weight = g.weight, .size = g.size,
                     .nodes = b->nodes, .leaf_max = 1, .leaf_node = g.leaf_node,
                     .leaf_block = g.leaf_block, .leaf_depth = g.leaf_depth};
