@@ -8,9 +8,9 @@
  * subtrees are OpenMP tasks; the tree is the same for any thread count: each
  * subtree owns a fixed block of nodes. The blocks of one build over all the
  * balls keep unused slots (where a leaf holds several), squeezed out at the
- * end; the clustered build leaves none: the tree over the clusters takes
- * the first slots, and each cluster's descendants (as many as its subtree
- * needs) follow, cluster by cluster. */
+ * end; the clustered build leaves none: the tree over the groups of
+ * clusters takes the first slots, then each group's region holds what is
+ * below it (build_clustered). */
 #include "accel/bvh.h"
 
 #include <omp.h>
@@ -129,14 +129,14 @@ static BvhNode cluster_node(SahBuild *b, const Ball *balls, int first, int count
  * array each (m entries). */
 typedef struct Top {
   Box *boxes;
-  int *ids, *weight, *size, *leaf_node, *leaf_block, *leaf_depth, *first, *count;
+  int *ids, *weight, *leaf_node, *leaf_depth, *place, *first, *count;
 } Top;
 
 static bool top_alloc(Top *t, int m)
 {
   t->boxes = malloc((size_t)m * sizeof *t->boxes);
-  int **arrays[] = {&t->ids,        &t->weight, &t->size,  &t->leaf_node, &t->leaf_block,
-                    &t->leaf_depth, &t->first,  &t->count};
+  int **arrays[] = {&t->ids,   &t->weight, &t->leaf_node, &t->leaf_depth,
+                    &t->place, &t->first,  &t->count};
   bool ok = t->boxes != NULL;
   for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; k++)
     ok = (*arrays[k] = malloc((size_t)m * sizeof(int))) != NULL && ok;
@@ -146,8 +146,8 @@ static bool top_alloc(Top *t, int m)
 static void top_free(Top *t)
 {
   free(t->boxes);
-  int *arrays[] = {t->ids,        t->weight, t->size,  t->leaf_node, t->leaf_block,
-                   t->leaf_depth, t->first,  t->count};
+  int *arrays[] = {t->ids,   t->weight, t->leaf_node, t->leaf_depth,
+                   t->place, t->first,  t->count};
   for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; k++)
     free(arrays[k]);
 }
@@ -191,8 +191,7 @@ static void cut_clusters(const uint32_t *sorted, const MortonRuns *gr, MortonRun
     g->first[k] = j;
 }
 
-/* Each group's bounds, weight and size (its clusters: the tree over them
- * takes 2 count - 1 slots), from its clusters' in t. */
+/* Each group's bounds and weight, from its clusters' in t. */
 static void group_clusters(const MortonRuns *gr, const Top *t, Top *g)
 {
   for (int k = 0; k < gr->n; k++) {
@@ -202,23 +201,25 @@ static void group_clusters(const MortonRuns *gr, const Top *t, Top *g)
       sah_box_grow(&g->boxes[k], &t->boxes[j]);
       g->weight[k] += t->weight[j];
     }
-    g->size[k] = g->count[k];
     g->ids[k] = k;
   }
 }
 
 /* Each cluster's subtree over its balls, then the tree over the clusters of
  * the balls in Morton order (b->ids, codes `sorted`); *n_nodes the nodes
- * used. The tree over the C clusters takes slots 0 .. 2 C - 2, each
- * cluster's root one of them; the clusters' descendants follow, cluster by
- * cluster in Morton order, so that they are built first, at their place,
- * and give the tree above their bounds. A cluster weighs its subtree's
- * leaves in the heuristic. The tree over the clusters is built in two
- * levels, as HLBVH does: the heuristic over groups of clusters (GROUP
- * neighbouring balls at most), then in each group over its clusters, all
- * groups at once (the heuristic over every cluster spent most of its time
- * near the top on one thread). The balls stay where they are: leaves index
- * b->ids. */
+ * used. The tree over the clusters is built in two levels, as HLBVH does:
+ * the heuristic over groups of clusters (GROUP neighbouring balls at most),
+ * then in each group over its clusters, all groups at once (the heuristic
+ * over every cluster spent most of its time near the top on one thread). A
+ * cluster weighs its subtree's leaves in the heuristic, a group its
+ * clusters'. The tree over the G groups takes slots 0 .. 2 G - 2; then, group
+ * by group in Morton order, each group's region: its tree's descendants
+ * (its root is a leaf of the tree over the groups), then its clusters'
+ * descendants, cluster by cluster (a cluster's root is a leaf of its group's
+ * tree). The regions depend on the counts only, so the clusters are built
+ * first, at their place, and give the trees above them their bounds; and a
+ * ray that enters a group finds what is below it in a few kilobytes. The
+ * balls stay where they are: leaves index b->ids. */
 static bool build_clustered(SahBuild *b, const Ball *balls, int n, const uint32_t *sorted,
                             int *n_nodes)
 {
@@ -240,11 +241,15 @@ static bool build_clustered(SahBuild *b, const Ball *balls, int n, const uint32_
     int per[CLUSTER + 1]; /* a cluster's leaves, by its count */
     for (int m = 0; m <= CLUSTER; m++)
       per[m] = cluster_leaves(m, b->leaf_max);
-    for (int k = 0, block = 2 * c.n - 1; k < c.n; k++) { /* t.first: its descendants */
-      t.weight[k] = per[c.count[k]];
-      t.first[k] = block;
-      block += 2 * t.weight[k] - 2;
-      leaves += t.weight[k];
+    for (int q = 0, block = 2 * gr.n - 1; q < gr.n; q++) { /* the regions */
+      g.place[q] = block; /* the group's tree's descendants */
+      block += 2 * g.count[q] - 2;
+      for (int k = g.first[q]; k < g.first[q] + g.count[q]; k++) {
+        t.weight[k] = per[c.count[k]];
+        t.first[k] = block; /* the cluster's descendants */
+        block += 2 * t.weight[k] - 2;
+        leaves += t.weight[k];
+      }
     }
 #pragma omp parallel for schedule(dynamic, 256)
     for (int k = 0; k < c.n; k++) { /* the root kept in t: box, index, meta */
@@ -259,18 +264,17 @@ static bool build_clustered(SahBuild *b, const Ball *balls, int n, const uint32_
       t.ids[k] = k;
     }
     group_clusters(&gr, &t, &g);
-    SahBuild top = {.items = g.boxes, .ids = g.ids, .weight = g.weight, .size = g.size,
-                    .nodes = b->nodes, .leaf_max = 1, .leaf_node = g.leaf_node,
-                    .leaf_block = g.leaf_block, .leaf_depth = g.leaf_depth};
+    SahBuild top = {.items = g.boxes, .ids = g.ids, .weight = g.weight, .nodes = b->nodes,
+                    .leaf_max = 1, .leaf_node = g.leaf_node, .leaf_depth = g.leaf_depth};
 #pragma omp parallel
 #pragma omp single
     sah_build_node(&top, 0, 0, gr.n, 0, 1);
     SahBuild mid = {.items = t.boxes, .ids = t.ids, .weight = t.weight, .nodes = b->nodes,
-                    .leaf_max = 1, .leaf_node = t.leaf_node, .leaf_block = t.leaf_block};
+                    .leaf_max = 1, .leaf_node = t.leaf_node};
 #pragma omp parallel for schedule(dynamic, 16)
     for (int p = 0; p < gr.n; p++)
       sah_build_node(&mid, g.leaf_node[p], g.first[g.ids[p]], g.count[g.ids[p]],
-                     g.leaf_depth[p], g.leaf_block[p]);
+                     g.leaf_depth[p], g.place[g.ids[p]]);
 #pragma omp parallel for schedule(static)
     for (int p = 0; p < c.n; p++) { /* each cluster's root at its leaf's slot */
       BvhNode *nd = &b->nodes[t.leaf_node[p]];

@@ -71,12 +71,6 @@ static int weight_of(const SahBuild *b, int k)
   return b->weight ? b->weight[k] : 1;
 }
 
-/* Item k's share of the node blocks (SahBuild.size). */
-static int size_of(const SahBuild *b, int k)
-{
-  return b->size ? b->size[k] : 1;
-}
-
 static float centre2(const Box *it, int a)
 {
   return it->lo[a] + it->hi[a];
@@ -175,19 +169,19 @@ static float best_split(const SahBuild *b, int first, int count, const Box *cb,
 
 /* The two halves of a split node: where the right one starts, the axis
  * along which the left one is the lower (-1: none, the items halved by
- * count), and each half's bounds, bounds of centres (c = lo + hi), weighted
- * count and share of the node blocks. */
+ * count), and each half's bounds, bounds of centres (c = lo + hi) and
+ * weighted count. */
 typedef struct Halves {
   int mid, axis;
   Box box[2], cb[2];
-  int weight[2], size[2];
+  int weight[2];
 } Halves;
 
 static void halves_empty(Halves *h)
 {
   for (int s = 0; s < 2; s++) {
     h->box[s] = h->cb[s] = sah_box_empty();
-    h->weight[s] = h->size[s] = 0;
+    h->weight[s] = 0;
   }
 }
 
@@ -199,7 +193,6 @@ static void halves_add(Halves *h, int s, const SahBuild *b, int k)
   sah_box_grow(&h->box[s], it);
   sah_box_grow(&h->cb[s], &c);
   h->weight[s] += weight_of(b, k);
-  h->size[s] += size_of(b, k);
 }
 
 /* Items i and j trade places (with their ids and weights). */
@@ -215,11 +208,6 @@ static void swap_items(SahBuild *b, int i, int j)
     int w = b->weight[i];
     b->weight[i] = b->weight[j];
     b->weight[j] = w;
-  }
-  if (b->size) {
-    int z = b->size[i];
-    b->size[i] = b->size[j];
-    b->size[j] = z;
   }
 }
 
@@ -310,9 +298,8 @@ static void build_node(SahBuild *b, int node, int first, int count, int depth, i
   Halves h;
   bool leaf = count <= 1 || b->one_leaf ||
               !partition(b, first, count, cb, box_area(box), depth, &h);
-  if (leaf && b->weight) { /* one cluster: its own build fills the node */
+  if (leaf && b->weight) { /* one cluster or group: the caller fills the node */
     b->leaf_node[first] = node;
-    b->leaf_block[first] = block;
     if (b->leaf_depth)
       b->leaf_depth[first] = depth;
     return;
@@ -339,14 +326,14 @@ static void build_node(SahBuild *b, int node, int first, int count, int depth, i
   }
   nd->index = block;
   nd->meta = -1 - axis;
-  int lc = h.mid - first, lw = h.weight[0], ls = h.size[0];
+  int lc = h.mid - first, lw = h.weight[0];
   if (lw > TASK_MIN) {
 #pragma omp task default(none) firstprivate(b, block, first, lc, depth, h)
     build_node(b, block, first, lc, depth + 1, block + 2, &h.box[0], &h.cb[0]);
   } else {
     build_node(b, block, first, lc, depth + 1, block + 2, &h.box[0], &h.cb[0]);
   }
-  build_node(b, block + 1, h.mid, count - lc, depth + 1, block + 2 * ls, &h.box[1],
+  build_node(b, block + 1, h.mid, count - lc, depth + 1, block + 2 * lc, &h.box[1],
              &h.cb[1]);
 }
 

@@ -9,20 +9,17 @@
 #include "accel/bvh.h"
 
 /* A build over items (boxes), partitioned in place. With `weight`, item k
- * stands for weight[k] boxes (a cluster) and counts that much in the
- * heuristic; each leaf is then one item, and leaf_node/leaf_block[position]
- * say where its subtree goes. The node blocks count `size`: item k's own
- * subtree takes 2 size[k] - 1 slots (a group of size[k] clusters; 1: the
- * leaf's slot alone, its subtree kept elsewhere). */
+ * stands for weight[k] boxes (a cluster, or a group of clusters) and counts
+ * that much in the heuristic; each leaf is then one item, whose slot
+ * leaf_node[position] the caller fills (its subtree is kept elsewhere). */
 typedef struct SahBuild {
   Box *items;
   int *ids;            /* moved with the items */
   int *weight;         /* NULL: 1 each */
-  int *size;           /* moved with the items; NULL: 1 each */
-  BvhNode *nodes;      /* a subtree of items of sizes summing to c owns 2 c - 1 slots */
+  BvhNode *nodes;      /* a subtree of c items owns 2 c - 1 slots */
   int leaf_max;        /* most items a leaf may hold (1 with weights) */
   bool one_leaf;       /* the root is a leaf of everything */
-  int *leaf_node, *leaf_block; /* with weights */
+  int *leaf_node;      /* with weights */
   int *leaf_depth;     /* with weights, or NULL: each leaf's depth */
 } SahBuild;
 
@@ -36,9 +33,8 @@ void sah_box_grow(Box *b, const Box *x);
 int sah_apart_axis(const Box *a, const Box *b, bool *b_lower);
 
 /* Build node `node` over items [first, first + count) at `depth`; its
- * descendants go to the slots from `block` on (the left child's items, of
- * sizes summing to c_l, in the 2 c_l - 2 after the pair, the right child's
- * after them). Subtrees of
+ * descendants go to the slots from `block` on (the left child's c_l items in
+ * the 2 c_l - 2 after the pair, the right child's after them). Subtrees of
  * more than a few thousand items become OpenMP tasks: call it inside a
  * parallel region's single construct. The nodes are the same for any
  * number of threads. */
