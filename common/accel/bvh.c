@@ -162,7 +162,7 @@ enum { CUT_PARTS = 256 }; /* most threads cutting clusters at once */
  * are those of its clusters), then the parts packed in order. The same
  * clusters for any number of threads. In g, each group's clusters g.first
  * .. g.first + g.count. */
-static void cut_clusters(const uint32_t *sorted, const MortonRuns *gr, MortonRuns *c, Top *g)
+static void cut_clusters(const uint64_t *sorted, const MortonRuns *gr, MortonRuns *c, Top *g)
 {
   int at[CUT_PARTS], count[CUT_PARTS], parts = omp_get_max_threads();
   parts = parts < CUT_PARTS ? parts : CUT_PARTS;
@@ -206,7 +206,7 @@ static void group_clusters(const MortonRuns *gr, const Top *t, Top *g)
 }
 
 /* Each cluster's subtree over its balls, then the tree over the clusters of
- * the balls in Morton order (b->ids, codes `sorted`); *n_nodes the nodes
+ * the balls in Morton order (b->ids, the sorted pairs `sorted`); *n_nodes the nodes
  * used. The tree over the clusters is built in two levels, as HLBVH does:
  * the heuristic over groups of clusters (GROUP neighbouring balls at most),
  * then in each group over its clusters, all groups at once (the heuristic
@@ -220,7 +220,7 @@ static void group_clusters(const MortonRuns *gr, const Top *t, Top *g)
  * first, at their place, and give the trees above them their bounds; and a
  * ray that enters a group finds what is below it in a few kilobytes. The
  * balls stay where they are: leaves index b->ids. */
-static bool build_clustered(SahBuild *b, const Ball *balls, int n, const uint32_t *sorted,
+static bool build_clustered(SahBuild *b, const Ball *balls, int n, const uint64_t *sorted,
                             int *n_nodes)
 {
   int leaves = 0;
@@ -237,7 +237,7 @@ static bool build_clustered(SahBuild *b, const Ball *balls, int n, const uint32_
     cut_clusters(sorted, &gr, &c, &g);
     ok = top_alloc(&t, c.n);
   }
-  if (ok) { /* the codes (in the node array) are read no more */
+  if (ok) { /* the sorted pairs (in the node array) are read no more */
     int per[CLUSTER + 1]; /* a cluster's leaves, by its count */
     for (int m = 0; m <= CLUSTER; m++)
       per[m] = cluster_leaves(m, b->leaf_max);
@@ -312,15 +312,15 @@ bool bvh_build(Bvh *bvh, const Ball *balls, int n, int leaf_max)
   int n_nodes = 0;
   if (ok && n > CLUSTER_FROM && !b.one_leaf && leaf_max >= 2) {
     /* The node array (64 n bytes), written only once the clusters are cut,
-     * holds the sort's pairs (16 n bytes) and the codes (4 n) until then, so
-     * the nodes land on pages already touched (10^6 spheres: 8 000 fewer
-     * page faults; docs/reliability.md, "Fifth pass"). */
+     * holds the sort's pairs (16 n bytes) until then, so the nodes land on
+     * pages already touched (10^6 spheres: 8 000 fewer page faults;
+     * docs/reliability.md, "Fifth pass"); the clusters are cut from the
+     * sorted pairs themselves. */
     uint64_t *scratch = (uint64_t *)(void *)b.nodes;
-    uint32_t *codes = (uint32_t *)(void *)(scratch + 2 * (size_t)n);
-    pages_populate_parallel(scratch, (size_t)n * (2 * sizeof *scratch + sizeof *codes));
+    pages_populate_parallel(scratch, (size_t)n * 2 * sizeof *scratch);
     pages_populate_parallel(b.ids, (size_t)n * sizeof *b.ids);
-    ok = morton_sort(balls, n, b.ids, codes, scratch) &&
-         build_clustered(&b, balls, n, codes, &n_nodes);
+    ok = morton_sort(balls, n, b.ids, scratch) &&
+         build_clustered(&b, balls, n, scratch + n, &n_nodes);
   } else if (ok && (b.items = malloc((size_t)n * sizeof *b.items))) {
     for (int k = 0; k < n; k++) { /* the heuristic moves its items: its own boxes */
       b.items[k] = ball_box(balls[k]);

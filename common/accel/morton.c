@@ -103,21 +103,21 @@ static bool sort_pairs(uint64_t *pair, int n)
   return true;
 }
 
-void morton_runs(const uint32_t *sorted, int first, int count, int max, MortonRuns *c)
+void morton_runs(const uint64_t *sorted, int first, int count, int max, MortonRuns *c)
 {
   if (count <= max) {
     c->first[c->n] = first;
     c->count[c->n++] = count;
     return;
   }
-  uint32_t diff = sorted[first] ^ sorted[first + count - 1];
+  uint32_t diff = (uint32_t)((sorted[first] ^ sorted[first + count - 1]) >> 32);
   int mid = first + count / 2;
   if (diff != 0) {
     uint32_t bit = 1u << (31 - __builtin_clz(diff));
     int lo = first, hi = first + count - 1; /* first index with the bit set */
     while (lo < hi) {
       int m = lo + (hi - lo) / 2;
-      if (sorted[m] & bit)
+      if (sorted[m] >> 32 & bit)
         hi = m;
       else
         lo = m + 1;
@@ -128,16 +128,14 @@ void morton_runs(const uint32_t *sorted, int first, int count, int max, MortonRu
   morton_runs(sorted, mid, first + count - mid, max, c);
 }
 
-bool morton_sort(const Ball *items, int n, int *ids, uint32_t *codes, uint64_t *scratch)
+bool morton_sort(const Ball *items, int n, int *ids, uint64_t *scratch)
 {
   morton_codes(items, n, scratch);
   if (!sort_pairs(scratch, n))
     return false;
   const uint64_t *sorted = scratch + n;
 #pragma omp parallel for schedule(static) if (n > 65536)
-  for (int k = 0; k < n; k++) {
+  for (int k = 0; k < n; k++)
     ids[k] = (int)(uint32_t)sorted[k];
-    codes[k] = (uint32_t)(sorted[k] >> 32);
-  }
   return true;
 }

@@ -11,11 +11,11 @@
 
 /* ids[0 .. n): the balls' indices sorted by the Morton code of their
  * centres (on a cubic grid over the centres' bounds, so that a flat scene is
- * not cut along its thin axis), ties in index order; codes[0 .. n): the
- * sorted codes. scratch: room for 2n pairs of (code, index), which the
- * radix sort uses and leaves unspecified (it must not overlap ids or codes).
- * The same for any number of threads. False when out of memory. */
-bool morton_sort(const Ball *items, int n, int *ids, uint32_t *codes, uint64_t *scratch);
+ * not cut along its thin axis), ties in index order. scratch: room for 2n
+ * pairs (code << 32 | index), which the radix sort uses; it leaves the
+ * sorted pairs in scratch[n .. 2n) (scratch must not overlap ids). The same
+ * for any number of threads. False when out of memory. */
+bool morton_sort(const Ball *items, int n, int *ids, uint64_t *scratch);
 
 /* Runs of the sorted codes, each of at most `max` balls. */
 typedef struct MortonRuns {
@@ -23,9 +23,9 @@ typedef struct MortonRuns {
   int n;
 } MortonRuns;
 
-/* Cut sorted codes [first, first + count) at their highest differing bit
- * until each part holds at most `max` balls (equal codes: by count),
- * appending the parts to r. */
-void morton_runs(const uint32_t *sorted, int first, int count, int max, MortonRuns *r);
+/* Cut the sorted pairs [first, first + count) (morton_sort's) at their
+ * codes' highest differing bit until each part holds at most `max` balls
+ * (equal codes: by count), appending the parts to r. */
+void morton_runs(const uint64_t *sorted, int first, int count, int max, MortonRuns *r);
 
 #endif
