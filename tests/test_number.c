@@ -172,10 +172,11 @@ Test(number, reads_only_the_bytes_it_is_given)
 /* number_prefix, as the parser's fast path calls it: on the scene text, which
  * goes on after the word. Each random word is followed by a byte that ends
  * it (a space, a newline, '#') or may continue it ('.', 'e', a digit,
- * 'x'), then 20 more bytes (the reader looks at 8 bytes at a time); where number_prefix reads a number, it must be
- * number_parse's float for the bytes it read, and it must stop at the end of
- * a word the next byte ends. Plain decimals of fewer than 8 digits on each
- * side of the point, as scenes write them (%g, %.6f), must be read. */
+ * 'x'), then 20 more bytes (the reader looks at 8 bytes at a time); where
+ * number_prefix reads a number, it must be number_parse's float for the
+ * bytes it read, and it must stop at the end of a word the next byte ends.
+ * Plain decimals of fewer than 8 digits on each side of the point, as
+ * scenes write them (%g, %.6f), must be read. */
 Test(number, prefix_reads_as_number_parse_up_to_where_it_stops, .timeout = 60)
 {
   Check c = CHECK("number_prefix", DOC);

@@ -76,12 +76,6 @@ static int cluster_leaves(int count, int leaf_max)
                                  cluster_leaves(count - count / 2, leaf_max);
 }
 
-/* A node's bounds as a Box. */
-static Box node_box(const BvhNode *nd)
-{
-  return (Box){{nd->lo[0], nd->lo[1], nd->lo[2], 0.0f}, {nd->hi[0], nd->hi[1], nd->hi[2], 0.0f}};
-}
-
 /* The subtree of a cluster's balls ids[first .. first + count) (at most
  * CLUSTER neighbours in Morton order), halved by count down to leaves of at
  * most b->leaf_max balls (ids in increasing order): its descendants written
@@ -107,8 +101,7 @@ static BvhNode cluster_node(SahBuild *b, const Ball *balls, int first, int count
       Box it = ball_box(balls[b->ids[k]]);
       sah_box_grow(&box, &it);
     }
-    return (BvhNode){{box.lo[0], box.lo[1], box.lo[2]}, {box.hi[0], box.hi[1], box.hi[2]},
-                     first, count};
+    return node_make(&box, first, count);
   }
   int lc = count / 2;
   BvhNode half[2] = {
@@ -121,8 +114,7 @@ static BvhNode cluster_node(SahBuild *b, const Ball *balls, int first, int count
   b->nodes[block + second_lower] = half[0];
   b->nodes[block + !second_lower] = half[1];
   sah_box_grow(&box[0], &box[1]);
-  return (BvhNode){{box[0].lo[0], box[0].lo[1], box[0].lo[2]},
-                   {box[0].hi[0], box[0].hi[1], box[0].hi[2]}, block, -1 - axis};
+  return node_make(&box[0], block, -1 - axis);
 }
 
 /* What a build over weighted boxes needs (clusters, or groups of them), one
@@ -225,9 +217,8 @@ static bool build_clustered(SahBuild *b, const Ball *balls, int n, const uint64_
 {
   int leaves = 0;
   MortonRuns c = {malloc((size_t)n * sizeof(int)), malloc((size_t)n * sizeof(int)), 0};
-  MortonRuns gr = {0};
+  MortonRuns gr = {malloc((size_t)n * sizeof(int)), malloc((size_t)n * sizeof(int)), 0};
   Top t = {0}, g = {0};
-  gr = (MortonRuns){malloc((size_t)n * sizeof(int)), malloc((size_t)n * sizeof(int)), 0};
   bool ok = c.first && c.count && gr.first && gr.count;
   if (ok) { /* the groups (only the pages they write are touched), then their clusters */
     morton_runs(sorted, 0, n, GROUP, &gr);
@@ -276,15 +267,8 @@ static bool build_clustered(SahBuild *b, const Ball *balls, int n, const uint64_
       sah_build_node(&mid, g.leaf_node[p], g.first[g.ids[p]], g.count[g.ids[p]],
                      g.leaf_depth[p], g.place[g.ids[p]]);
 #pragma omp parallel for schedule(static)
-    for (int p = 0; p < c.n; p++) { /* each cluster's root at its leaf's slot */
-      BvhNode *nd = &b->nodes[t.leaf_node[p]];
-      for (int a = 0; a < 3; a++) {
-        nd->lo[a] = t.boxes[p].lo[a];
-        nd->hi[a] = t.boxes[p].hi[a];
-      }
-      nd->index = t.first[t.ids[p]];
-      nd->meta = t.count[t.ids[p]];
-    }
+    for (int p = 0; p < c.n; p++) /* each cluster's root at its leaf's slot */
+      b->nodes[t.leaf_node[p]] = node_make(&t.boxes[p], t.first[t.ids[p]], t.count[t.ids[p]]);
   }
   free(c.first);
   free(c.count);

@@ -36,6 +36,18 @@ static inline Box ball_box(Ball b)
   return (Box){c - e, c + e};
 }
 
+/* A node with bounds `box`, and a node's bounds as a box. */
+static inline BvhNode node_make(const Box *box, int index, int meta)
+{
+  return (BvhNode){{box->lo[0], box->lo[1], box->lo[2]}, {box->hi[0], box->hi[1], box->hi[2]},
+                   index, meta};
+}
+
+static inline Box node_box(const BvhNode *nd)
+{
+  return (Box){{nd->lo[0], nd->lo[1], nd->lo[2], 0.0f}, {nd->hi[0], nd->hi[1], nd->hi[2], 0.0f}};
+}
+
 typedef struct Bvh {
   BvhNode *nodes; /* nodes[0] is the root; owned */
   int n_nodes;

@@ -304,14 +304,8 @@ static void build_node(SahBuild *b, int node, int first, int count, int depth, i
       b->leaf_depth[first] = depth;
     return;
   }
-  BvhNode *nd = &b->nodes[node];
-  for (int a = 0; a < 3; a++) {
-    nd->lo[a] = box->lo[a];
-    nd->hi[a] = box->hi[a];
-  }
   if (leaf) {
-    nd->index = first;
-    nd->meta = count;
+    b->nodes[node] = node_make(box, first, count);
     return;
   }
   /* The axis the traversal orders the children by (nearer first): the
@@ -324,8 +318,7 @@ static void build_node(SahBuild *b, int node, int first, int count, int depth, i
       if (cb->hi[a] - cb->lo[a] > cb->hi[axis] - cb->lo[axis])
         axis = a;
   }
-  nd->index = block;
-  nd->meta = -1 - axis;
+  b->nodes[node] = node_make(box, block, -1 - axis);
   int lc = h.mid - first, lw = h.weight[0];
   if (lw > TASK_MIN) {
 #pragma omp task default(none) firstprivate(b, block, first, lc, depth, h)
