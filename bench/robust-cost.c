@@ -27,7 +27,7 @@ static float other_hit_t(const Instance *in, Ray r, float tmax, Geometry g)
     return g == TEXTBOOK ? textbook_sphere_t(&in->sphere, r, tmax)
                          : float_bc_sphere_t(&in->sphere, r, tmax);
   if (in->shape == SHAPE_PLANE && g == TEXTBOOK)
-    return textbook_plane_t(&in->plane, r, tmax);
+    return textbook_plane_t(in->plane, r, tmax);
   return scene_instance_hit_t(in, r, tmax);
 }
 

@@ -19,10 +19,15 @@ void scene_init(Scene *scene)
               vec_make(0.0f, 1.0f, 0.0f), 45.0f, 1.0f, 800.0f / 600.0f);
 }
 
+_Static_assert(sizeof(Instance) == 32, "an instance is half a cache line");
+
 void scene_free(Scene *scene)
 {
   free(scene->materials);
   free(scene->lights);
+  for (int k = 0; k < scene->n_planes; k++)
+    free(scene->planes[k]);
+  free(scene->planes);
   free(scene->instances);
   if (scene->index)
     scene->index->destroy(scene->index);
@@ -33,6 +38,16 @@ void scene_free(Scene *scene)
 static bool reserve(void **array, int count, int more, size_t size)
 {
   if (grow_reserve(array, (size_t)count, (size_t)more, size))
+    return true;
+  fprintf(stderr, "scene: out of memory\n");
+  return false;
+}
+
+/* Room for `more` instances after the scene's, the array kept aligned. */
+static bool reserve_instances(Scene *scene, int more)
+{
+  if (grow_reserve_aligned((void **)&scene->instances, (size_t)scene->n_instances, (size_t)more,
+                           sizeof(Instance), INSTANCE_ALIGN))
     return true;
   fprintf(stderr, "scene: out of memory\n");
   return false;
@@ -58,10 +73,27 @@ bool scene_add_light(Scene *scene, const Light *light)
   return push((void **)&scene->lights, &scene->n_lights, sizeof *light, light);
 }
 
+const Plane *scene_add_plane(Scene *scene, const Plane *plane)
+{
+  Plane *copy = malloc(sizeof *copy);
+  if (!copy) {
+    fprintf(stderr, "scene: out of memory\n");
+    return NULL;
+  }
+  if (!reserve((void **)&scene->planes, scene->n_planes, 1, sizeof *scene->planes)) {
+    free(copy);
+    return NULL;
+  }
+  *copy = *plane;
+  scene->planes[scene->n_planes++] = copy;
+  return copy;
+}
+
 bool scene_add_instance(Scene *scene, const Instance *inst)
 {
-  if (!push((void **)&scene->instances, &scene->n_instances, sizeof *inst, inst))
+  if (!reserve_instances(scene, 1))
     return false;
+  scene->instances[scene->n_instances++] = *inst;
   if (inst->material >= 0)
     scene->n_shapes = scene->n_instances;
   return true;
@@ -101,7 +133,7 @@ static bool add_light_shapes(Scene *scene, unsigned features)
     Instance inst = {.material = -1, .light = k};
     if (light->type == LIGHT_AREA) {
       inst.shape = SHAPE_QUAD;
-      inst.quad = light->quad;
+      inst.quad = &light->quad;
     } else if (light->type == LIGHT_POINT && light->radius > 0.0f) {
       if (!(features & SCENE_LIGHT_SHAPES)) {
         scene->info.ignored |= SCENE_LIGHT_SHAPES;
@@ -112,8 +144,9 @@ static bool add_light_shapes(Scene *scene, unsigned features)
     } else {
       continue;
     }
-    if (!push((void **)&scene->instances, &scene->n_instances, sizeof inst, &inst))
+    if (!reserve_instances(scene, 1))
       return false;
+    scene->instances[scene->n_instances++] = inst;
   }
   return true;
 }
@@ -167,8 +200,8 @@ float scene_instance_hit_t(const Instance *inst, Ray r, float tmax)
 {
   switch (inst->shape) {
   case SHAPE_SPHERE: return sphere_hit_t(&inst->sphere, r, tmax);
-  case SHAPE_PLANE: return plane_hit_t(&inst->plane, r, tmax);
-  case SHAPE_QUAD: return quad_hit_t(&inst->quad, r, tmax);
+  case SHAPE_PLANE: return plane_hit_t(inst->plane, r, tmax);
+  case SHAPE_QUAD: return quad_hit_t(inst->quad, r, tmax);
   }
   return INFINITY;
 }
@@ -177,8 +210,8 @@ static void instance_hit_fill(const Instance *inst, Ray r, float t, Hit *hit)
 {
   switch (inst->shape) {
   case SHAPE_SPHERE: sphere_hit_fill(&inst->sphere, r, t, hit); break;
-  case SHAPE_PLANE: plane_hit_fill(&inst->plane, r, t, hit); break;
-  case SHAPE_QUAD: quad_hit_fill(&inst->quad, r, t, hit); break;
+  case SHAPE_PLANE: plane_hit_fill(inst->plane, r, t, hit); break;
+  case SHAPE_QUAD: quad_hit_fill(inst->quad, r, t, hit); break;
   }
   hit->inst = inst;
 }

@@ -15,16 +15,22 @@
 
 typedef enum ShapeType { SHAPE_SPHERE, SHAPE_PLANE, SHAPE_QUAD } ShapeType;
 
+/* 32 bytes, two to a cache line (the scene's array of them is aligned to
+ * 64): a sphere is kept in place, the larger shapes where the scene keeps
+ * them (a 10^6-sphere scene's instances take 32 MB instead of 64;
+ * docs/reliability.md, "Twelfth pass"). */
 typedef struct Instance {
   ShapeType shape;
+  int material;         /* index into Scene.materials, or -1 for a light's shape */
+  int light;            /* index into Scene.lights, or -1 for a lit object */
   union {
-    Sphere sphere;
-    Plane plane;
-    Quad quad;
+    Sphere sphere;      /* SHAPE_SPHERE */
+    const Plane *plane; /* SHAPE_PLANE: the scene's copy (scene_add_plane) */
+    const Quad *quad;   /* SHAPE_QUAD: its area light's, Scene.lights[light].quad */
   };
-  int material; /* index into Scene.materials, or -1 for a light's shape */
-  int light;    /* index into Scene.lights, or -1 for a lit object */
 } Instance;
+
+enum { INSTANCE_ALIGN = 64 }; /* Scene.instances' alignment in bytes */
 
 /* What a step knows how to render; the rest of a scene is ignored (and said). */
 enum SceneFeature {
@@ -71,7 +77,10 @@ typedef struct Scene {
   int n_materials;
   Light *lights;
   int n_lights;
-  Instance *instances;     /* lit shapes first, then the lights' shapes */
+  Plane **planes;          /* the planes instances point to, each owned */
+  int n_planes;
+  Instance *instances;     /* lit shapes first, then the lights' shapes;
+                            * INSTANCE_ALIGN-byte aligned */
   int n_instances;         /* all instances the camera sees */
   int n_shapes;            /* instances [0, n_shapes) have a material */
   SceneInfo info;          /* set by scene_prepare */
@@ -96,9 +105,14 @@ bool scene_add_material(Scene *scene, const Material *m);
 bool scene_add_light(Scene *scene, const Light *light);
 bool scene_add_instance(Scene *scene, const Instance *inst);
 
+/* A copy of the plane, kept by the scene until scene_free, for a
+ * SHAPE_PLANE instance to point to; NULL when out of memory. */
+const Plane *scene_add_plane(Scene *scene, const Plane *plane);
+
 /* Get the scene ready for a step that handles `features` (SceneFeature bits):
  * drop what it cannot render (recorded in info.ignored), order the instances,
- * fill info and derive the camera for the film's aspect. The acceleration
+ * fill info and derive the camera for the film's aspect. The lights' shapes
+ * point into Scene.lights: a light added afterwards needs another call. The acceleration
  * structure is built afterwards, by whoever wants one (accel_build).
  * False when out of memory (the scene is then only fit for scene_free). */
 bool scene_prepare(Scene *scene, unsigned features);

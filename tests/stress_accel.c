@@ -21,9 +21,9 @@ static void spheres_on_floor(Scene *s, Rng *g, int n, float half)
   scene_init(s);
   Material m = {.name = "m", .diffuse = vec_make(0.5f, 0.5f, 0.5f)};
   cr_assert(scene_add_material(s, &m), "out of memory");
-  Instance pl = {.shape = SHAPE_PLANE, .plane = plane_make(vec_make(0, 0, 0), vec_make(0, 1, 0)),
-                 .light = -1};
-  cr_assert(scene_add_instance(s, &pl), "out of memory");
+  Plane floor = plane_make(vec_make(0, 0, 0), vec_make(0, 1, 0));
+  Instance pl = {.shape = SHAPE_PLANE, .plane = scene_add_plane(s, &floor), .light = -1};
+  cr_assert(pl.plane && scene_add_instance(s, &pl), "out of memory");
   for (int k = 0; k < n; k++) {
     Instance in = {.shape = SHAPE_SPHERE, .light = -1};
     in.sphere.center = vec_make(uni(g, -half, half), uni(g, 0, 5), uni(g, -half, half));
@@ -150,9 +150,9 @@ Test(accel, large_scenes_give_the_plain_loops_answers)
       Material m = {.name = "m", .diffuse = vec_make(0.5f, 0.5f, 0.5f)};
       cr_assert(scene_add_material(&s, &m), "out of memory");
       for (int k = 0; k < 70000; k++) {
-        Instance pl = {.shape = SHAPE_PLANE, .light = -1,
-                       .plane = plane_make(vec_make(0, -100.0f - (float)k, 0), vec_make(0, 1, 0))};
-        cr_assert(scene_add_instance(&s, &pl), "out of memory");
+        Plane below = plane_make(vec_make(0, -100.0f - (float)k, 0), vec_make(0, 1, 0));
+        Instance pl = {.shape = SHAPE_PLANE, .light = -1, .plane = scene_add_plane(&s, &below)};
+        cr_assert(pl.plane && scene_add_instance(&s, &pl), "out of memory");
       }
       for (int k = 0; k < 10; k++) {
         Instance in = {.shape = SHAPE_SPHERE, .light = -1,
@@ -340,9 +340,9 @@ static void cone_scene(Scene *s, Rng *g, int n, int variant)
 {
   spheres_on_floor(s, g, n, 6);
   if (variant % 2) {
-    Instance pl = {.shape = SHAPE_PLANE, .light = -1,
-                   .plane = plane_make(vec_make(0, -0.5f, 0), vec_make(0.1f, 1, 0.05f))};
-    cr_assert(scene_add_instance(s, &pl), "out of memory");
+    Plane tilted = plane_make(vec_make(0, -0.5f, 0), vec_make(0.1f, 1, 0.05f));
+    Instance pl = {.shape = SHAPE_PLANE, .light = -1, .plane = scene_add_plane(s, &tilted)};
+    cr_assert(pl.plane && scene_add_instance(s, &pl), "out of memory");
   }
   const Sphere *inside = &s->instances[1 + (int)(rng_float(g) * (float)n)].sphere;
   s->camera.eye = variant == 2 ? inside->center : vec_make(uni(g, -12, 12), uni(g, 0.5f, 8), 12);

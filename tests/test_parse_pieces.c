@@ -21,8 +21,8 @@ static bool same_instance(const Instance *a, const Instance *b)
     return false;
   switch (a->shape) {
   case SHAPE_SPHERE: return memcmp(&a->sphere, &b->sphere, sizeof a->sphere) == 0;
-  case SHAPE_PLANE:  return memcmp(&a->plane, &b->plane, sizeof a->plane) == 0;
-  default:           return memcmp(&a->quad, &b->quad, sizeof a->quad) == 0;
+  case SHAPE_PLANE:  return memcmp(a->plane, b->plane, sizeof *a->plane) == 0;
+  default:           return memcmp(a->quad, b->quad, sizeof *a->quad) == 0;
   }
 }
 

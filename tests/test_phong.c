@@ -153,6 +153,7 @@ Test(phong, eye_past_the_lobe_sees_no_highlight)
  * shape (nothing can shadow the hit, in every step that adds shadows). */
 typedef struct Setup {
   Scene scene;
+  Plane floor;
   Instance inst;
   Hit hit;
   RenderSettings set;
@@ -166,8 +167,8 @@ static void setup(Setup *s, Material m, const Light *lights, int n_lights)
   for (int k = 0; k < n_lights; k++)
     cr_assert(scene_add_light(&s->scene, &lights[k]), "out of memory");
   cr_assert(scene_prepare(&s->scene, SCENE_CAMERA | SCENE_LIGHTS), "out of memory");
-  s->inst = (Instance){.shape = SHAPE_PLANE, .material = 0, .light = -1,
-                       .plane = plane_make(vec_make(0, 0, 0), vec_make(0, 1, 0))};
+  s->floor = plane_make(vec_make(0, 0, 0), vec_make(0, 1, 0));
+  s->inst = (Instance){.shape = SHAPE_PLANE, .material = 0, .light = -1, .plane = &s->floor};
   s->hit = floor_hit(&s->inst);
   s->set = (RenderSettings){.threads = 1, .seed = 1, .samples = 1, .light_samples = 1};
   s->ctx = (RenderCtx){.set = &s->set};

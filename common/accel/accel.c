@@ -3,8 +3,9 @@
  * in scenes of at most 16 spheres, their cones seen from the eye and the
  * lights (common/accel/cones.c) for the rays those know. The boxes and cones
  * only choose which instances a ray meets; each one met is tested with
- * scene_instance_hit_t, the shape's own function, so the answers are those
- * of scene.c's plain loop. */
+ * scene_instance_hit_t, the shape's own function (the hierarchy's spheres
+ * with sphere_hit_t, what it calls for them), so the answers are those of
+ * scene.c's plain loop. */
 #include "accel/accel.h"
 
 #include <limits.h>
@@ -53,18 +54,35 @@ static float next_up(float x)
   return x;
 }
 
-/* Test instance `id` and keep it when it is nearer, or as near and earlier in
- * instance order (the plain loop keeps the first of equal distances). Once
- * something is found, the test's limit is just above its distance, so that an
- * equal distance comes back and is compared by index. */
-static void consider(const Scene *scene, int id, const Ray *r, Best *best)
+/* The limit of the next test: once something is found, just above its
+ * distance, so that an equal distance comes back and is compared by index. */
+static float limit_of(const Best *best)
 {
-  float limit = best->inst == INT_MAX ? best->t : next_up(best->t);
-  float t = scene_instance_hit_t(&scene->instances[id], *r, limit);
+  return best->inst == INT_MAX ? best->t : next_up(best->t);
+}
+
+/* Keep instance `id`, met at t, when it is nearer, or as near and earlier in
+ * instance order (the plain loop keeps the first of equal distances). */
+static void keep(Best *best, int id, float t)
+{
   if (t < best->t || (t == best->t && best->inst != INT_MAX && id < best->inst)) {
     best->t = t;
     best->inst = id;
   }
+}
+
+/* Test instance `id` with its shape's function and keep it when nearer. */
+static void consider(const Scene *scene, int id, const Ray *r, Best *best)
+{
+  keep(best, id, scene_instance_hit_t(&scene->instances[id], *r, limit_of(best)));
+}
+
+/* The same for a lit sphere of the hierarchy (its leaves hold nothing else):
+ * sphere_hit_t, which scene_instance_hit_t would call, without the shape's
+ * switch, so that the compiler puts the test inside the traversal loop. */
+static float leaf_sphere_t(const Scene *scene, int id, const Ray *r, float tmax)
+{
+  return sphere_hit_t(&scene->instances[id].sphere, *r, tmax);
 }
 
 /* Ray's distance into a node's box; NaN (every comparison false) when it
@@ -108,7 +126,7 @@ static void bvh_closest(const Scene *scene, const Accel *acc, const Ray *r, Best
     if (box_enter(nd, o, inv_d, best->t) <= best->t) {
       if (nd->meta > 0) {
         for (int k = nd->index; k < nd->index + nd->meta; k++)
-          consider(scene, acc->spheres[k], r, best);
+          keep(best, acc->spheres[k], leaf_sphere_t(scene, acc->spheres[k], r, limit_of(best)));
       } else {
         bool neg = r->d.raw[-1 - nd->meta] < 0.0f;
         stack[top++] = nd->index + !neg;
@@ -131,7 +149,7 @@ static bool bvh_any(const Scene *scene, const Accel *acc, const Ray *r, float tm
     if (box_enter(nd, o, inv_d, tmax) < tmax) {
       if (nd->meta > 0) {
         for (int k = nd->index; k < nd->index + nd->meta; k++)
-          if (scene_instance_hit_t(&scene->instances[acc->spheres[k]], *r, tmax) < tmax)
+          if (leaf_sphere_t(scene, acc->spheres[k], r, tmax) < tmax)
             return true;
       } else {
         stack[top++] = nd->index + 1;
@@ -153,10 +171,10 @@ static bool bvh_any(const Scene *scene, const Accel *acc, const Ray *r, float tm
  * into the sky, are such rays. */
 static bool leaves_plane(const Instance *inst, const Ray *r)
 {
-  if (inst->shape != SHAPE_PLANE || inst->plane.axis < 0)
+  if (inst->shape != SHAPE_PLANE || inst->plane->axis < 0)
     return false;
-  int a = inst->plane.axis;
-  float h = r->o.raw[a] - inst->plane.point.raw[a], d = r->d.raw[a];
+  int a = inst->plane->axis;
+  float h = r->o.raw[a] - inst->plane->point.raw[a], d = r->d.raw[a];
   return d != 0.0f && (h == 0.0f || (h > 0.0f && d > 0.0f) || (h < 0.0f && d < 0.0f));
 }
 
@@ -419,7 +437,7 @@ static bool instance_may_occlude(const Instance *inst, const ShadowHull *h)
 {
   switch (inst->shape) {
   case SHAPE_SPHERE: return hull_may_meet_sphere(h, inst->sphere.center, inst->sphere.radius);
-  case SHAPE_PLANE: return hull_may_meet_plane(h, &inst->plane);
+  case SHAPE_PLANE: return hull_may_meet_plane(h, inst->plane);
   case SHAPE_QUAD: return true;
   }
   return true;

@@ -257,7 +257,10 @@ static bool st_plane(Parser *p)
   Field f[3];
   if (!fields_read(&p->lx, "plane", keys, 3, f) || !bounds_direction(&p->lx, &f[1], "normal"))
     return false;
-  Instance inst = {.shape = SHAPE_PLANE, .plane = plane_make(f[0].v, f[1].v)};
+  Plane plane = plane_make(f[0].v, f[1].v);
+  Instance inst = {.shape = SHAPE_PLANE, .plane = scene_add_plane(p->scene, &plane)};
+  if (!inst.plane)
+    return false;
   return add_shape(p, &inst, &p->lx.tok[f[2].val]);
 }
 

@@ -132,12 +132,27 @@ static void merge_shapes(Scene *s, const Scene *q, int known, int first_material
   s->n_instances += q->n_instances;
 }
 
+/* Piece q's planes, which its shapes point to, handed to s; false when out
+ * of memory (each piece then still owns its own). */
+static bool take_planes(Scene *s, Scene *q)
+{
+  if (q->n_planes == 0)
+    return true;
+  if (!grow_reserve((void **)&s->planes, (size_t)s->n_planes, (size_t)q->n_planes,
+                    sizeof *s->planes))
+    return false;
+  memcpy(s->planes + s->n_planes, q->planes, (size_t)q->n_planes * sizeof *q->planes);
+  s->n_planes += q->n_planes;
+  q->n_planes = 0;
+  return true;
+}
+
 /* Append piece q to piece 0: materials (each name new; q's first `known`
- * were piece 0's to begin with), lights, shapes (their material indices
- * moved past piece 0's), references to materials not defined in q before
+ * were piece 0's to begin with), lights, planes, shapes (their material
+ * indices moved past piece 0's), references to materials not defined in q before
  * them (resolved when piece 0 now has the material, else left to resolve).
  * False on a conflict or out of memory. */
-static bool merge(Piece *to, const Piece *q, int known)
+static bool merge(Piece *to, Piece *q, int known)
 {
   Scene *s = &to->scene;
   int first_material = s->n_materials, first_instance = s->n_instances;
@@ -153,6 +168,8 @@ static bool merge(Piece *to, const Piece *q, int known)
   for (int k = 0; k < q->scene.n_lights; k++)
     if (!scene_add_light(s, &q->scene.lights[k]))
       return false;
+  if (!take_planes(s, &q->scene))
+    return false;
   merge_shapes(s, &q->scene, known, first_material);
   return parser_pending_merge(&to->p, &q->p, first_instance);
 }
@@ -232,7 +249,9 @@ bool parser_load_chunks(const char *file, const char *text, size_t len, Scene *s
   first[0] = 0;
   for (int k = 0; k < n; k++)
     first[k + 1] += first[k];
-  Instance *shapes = ok ? malloc(grow_capacity((size_t)first[n]) * sizeof *shapes) : NULL;
+  Instance *shapes = ok ? aligned_alloc(INSTANCE_ALIGN, grow_capacity((size_t)first[n]) *
+                                                          sizeof *shapes)
+                        : NULL;
   if (!shapes) {
     if (h) {
       parser_end(&piece[0].p);
