@@ -243,21 +243,23 @@ static int layout_wanted(void)
        : strcmp(env, "bvh") == 0  ? 2 : -1;
 }
 
-/* A sphere's ball: its centre, and its radius padded (sphere_pad,
- * accel/cones.h) as the half width of its cube. */
+/* A sphere as the build reads it (accel/bvh.h). */
 static Ball sphere_ball(const Sphere *s)
 {
-  return (Ball){s->center.x, s->center.y, s->center.z, s->radius + sphere_pad(s)};
+  return (Ball){s->center.x, s->center.y, s->center.z, s->radius};
 }
 
-/* The hierarchy over the n spheres whose instance indices are ids[] and
- * balls balls[]: one leaf of all of them when `flat`, else binned SAH with
- * leaves of at most LEAF_MAX. Leaves list their spheres in instance order. */
-static bool build_tree(Accel *acc, const int *ids, int base, const Ball *balls, int n,
-                       bool flat)
+/* The hierarchy over the n lit spheres: instances base .. base + n - 1,
+ * read in place, or (base < 0) those whose indices are ids[], copied into
+ * balls[]. One leaf of all of them when `flat`, else binned SAH with leaves
+ * of at most LEAF_MAX. Leaves list their spheres in instance order. */
+static bool build_tree(const Scene *scene, Accel *acc, const int *ids, int base,
+                       const Ball *balls, int n, bool flat)
 {
   Bvh bvh = {0};
-  if (!bvh_build(&bvh, balls, n, flat ? n : LEAF_MAX))
+  Balls from = base >= 0 ? (Balls){(const char *)&scene->instances[base].sphere, sizeof(Instance)}
+                         : (Balls){(const char *)balls, sizeof *balls};
+  if (!bvh_build(&bvh, from, n, flat ? n : LEAF_MAX))
     return false;
   acc->spheres = bvh.order; /* leaf order, as indices into ids: map them */
 #pragma omp parallel for schedule(static) if (n > 65536)
@@ -282,10 +284,10 @@ static bool lit_sphere(const Scene *scene, int k)
  * times, and the sort no longer takes one thread: docs/reliability.md,
  * "Fourth pass"). *base: when a large scene's lit spheres are the instances
  * base, base + 1, ... (a file of spheres, its planes before or after them),
- * ids[] is left unwritten, sphere k being instance base + k; else -1. The
- * count then writes each ball at its place already (instance k's at k -
- * base, base the first lit sphere), and the fill is only that of the few
- * others: one pass over the instances instead of two ("Ninth pass"). */
+ * ids[] and balls[] are left unwritten, sphere k being instance base + k,
+ * which the build reads in place; else -1. The fill is then only that of the
+ * few others: one pass over the instances instead of two ("Ninth pass"),
+ * and no copy of the spheres ("Twelfth pass"). */
 static int sort_instances(const Scene *scene, Accel *acc, int *ids, Ball *balls, int *base)
 {
   int n = scene->n_instances, threads = omp_get_max_threads();
@@ -293,19 +295,11 @@ static int sort_instances(const Scene *scene, Accel *acc, int *ids, Ball *balls,
   int first[BLOCKS_MAX + 1], spheres[BLOCKS_MAX + 1], lo[BLOCKS_MAX], hi[BLOCKS_MAX];
   for (int b = 0; b <= blocks; b++)
     first[b] = (int)((long long)n * b / blocks);
-  int start = 0; /* a large scene's first lit sphere, or n */
-  while (blocks > 1 && start < n && !lit_sphere(scene, start))
-    start++;
 #pragma omp parallel for schedule(static, 1) if (blocks > 1)
   for (int b = 0; b < blocks; b++) {
     int count = 0, low = INT_MAX, high = -1; /* in registers: the arrays share a cache line */
-    int from = first[b] > start ? first[b] : start;
-    if (blocks > 1 && first[b + 1] > from) /* the balls, where they go if consecutive */
-      pages_populate(balls + (from - start), (size_t)(first[b + 1] - from) * sizeof *balls);
     for (int k = first[b]; k < first[b + 1]; k++)
       if (lit_sphere(scene, k)) {
-        if (blocks > 1)
-          balls[k - start] = sphere_ball(&scene->instances[k].sphere);
         count++;
         low = low < k ? low : k;
         high = k;
@@ -325,7 +319,7 @@ static int sort_instances(const Scene *scene, Accel *acc, int *ids, Ball *balls,
   spheres[blocks] = sum;
   *base = blocks > 1 && sum > 0 && hi_all - lo_all + 1 == sum ? lo_all : -1;
   acc->n_others = n - sum;
-  if (*base >= 0) { /* the balls are in place: the others are before and after them */
+  if (*base >= 0) { /* the spheres are read in place: the others are before and after them */
     int o = 0;
     for (int k = 0; k < *base; k++)
       acc->others[o++] = k;
@@ -371,7 +365,8 @@ bool accel_build(Scene *scene)
   int base = -1;
   int n = ok ? sort_instances(scene, acc, ids, balls, &base) : 0;
   if (ok && n > 0)
-    ok = build_tree(acc, ids, base, balls, n, layout == 1 || (layout < 0 && n <= ACCEL_FLAT_MAX));
+    ok = build_tree(scene, acc, ids, base, balls, n,
+                    layout == 1 || (layout < 0 && n <= ACCEL_FLAT_MAX));
   free(balls);
   if (ok && layout < 0 && n <= ACCEL_FLAT_MAX) {
     for (int k = 0; base >= 0 && k < n; k++) /* a few spheres among 65 536 other shapes */

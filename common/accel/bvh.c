@@ -87,7 +87,7 @@ static int cluster_leaves(int count, int leaf_max)
  * boxes lie furthest apart (their middles compared), the lower half in the
  * first slot of the pair: the traversal visits the nearer child first by
  * that axis. */
-static BvhNode cluster_node(SahBuild *b, const Ball *balls, int first, int count, int block)
+static BvhNode cluster_node(SahBuild *b, Balls balls, int first, int count, int block)
 {
   if (count <= b->leaf_max) { /* the ids in increasing order */
     for (int i = first + 1; i < first + count; i++)
@@ -98,7 +98,7 @@ static BvhNode cluster_node(SahBuild *b, const Ball *balls, int first, int count
       }
     Box box = sah_box_empty();
     for (int k = first; k < first + count; k++) {
-      Box it = ball_box(balls[b->ids[k]]);
+      Box it = ball_box(balls_get(balls, b->ids[k]));
       sah_box_grow(&box, &it);
     }
     return node_make(&box, first, count);
@@ -212,7 +212,7 @@ static void group_clusters(const MortonRuns *gr, const Top *t, Top *g)
  * first, at their place, and give the trees above them their bounds; and a
  * ray that enters a group finds what is below it in a few kilobytes. The
  * balls stay where they are: leaves index b->ids. */
-static bool build_clustered(SahBuild *b, const Ball *balls, int n, const uint64_t *sorted,
+static bool build_clustered(SahBuild *b, Balls balls, int n, const uint64_t *sorted,
                             int *n_nodes)
 {
   int leaves = 0;
@@ -247,7 +247,7 @@ static bool build_clustered(SahBuild *b, const Ball *balls, int n, const uint64_
       if (k + PREFETCH_CLUSTERS < c.n) /* Morton order is not the balls': asked for ahead */
         for (int j = c.first[k + PREFETCH_CLUSTERS];
              j < c.first[k + PREFETCH_CLUSTERS] + c.count[k + PREFETCH_CLUSTERS]; j++)
-          __builtin_prefetch(&balls[b->ids[j]]);
+          __builtin_prefetch(balls.at + (size_t)b->ids[j] * balls.stride);
       BvhNode root = cluster_node(b, balls, c.first[k], c.count[k], t.first[k]);
       t.boxes[k] = node_box(&root);
       t.first[k] = root.index;
@@ -286,7 +286,7 @@ static int compare_int(const void *a, const void *b)
   return (x > y) - (x < y);
 }
 
-bool bvh_build(Bvh *bvh, const Ball *balls, int n, int leaf_max)
+bool bvh_build(Bvh *bvh, Balls balls, int n, int leaf_max)
 {
   SahBuild b = {.leaf_max = leaf_max, .one_leaf = leaf_max >= n};
   b.ids = malloc((size_t)n * sizeof *b.ids);
@@ -307,7 +307,7 @@ bool bvh_build(Bvh *bvh, const Ball *balls, int n, int leaf_max)
          build_clustered(&b, balls, n, scratch + n, &n_nodes);
   } else if (ok && (b.items = malloc((size_t)n * sizeof *b.items))) {
     for (int k = 0; k < n; k++) { /* the heuristic moves its items: its own boxes */
-      b.items[k] = ball_box(balls[k]);
+      b.items[k] = ball_box(balls_get(balls, k));
       b.ids[k] = k;
     }
 #pragma omp parallel if (n > 8192)

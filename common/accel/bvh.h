@@ -5,6 +5,10 @@
 #define RT_BVH_H
 
 #include <stdbool.h>
+#include <stddef.h>
+#include <string.h>
+
+#include "accel/cones.h"
 
 /* One node, 32 bytes. Inner node: children nodes[index] and nodes[index + 1],
  * meta = -1 - the axis they were split along, nodes[index] the lower of the
@@ -24,16 +28,34 @@ typedef struct Box {
   V4 lo, hi;
 } Box;
 
-/* An item as the build receives it, 16 bytes where a Box takes 32: the
- * centre in lanes 0 to 2, in lane 3 the half width of the cube around it
- * (a sphere's radius and padding). */
+/* An item as the build receives it, 16 bytes where a Box takes 32: a
+ * sphere as the scene stores it (struct Sphere), its centre in lanes 0 to 2
+ * and its radius in lane 3. */
 typedef V4 Ball;
 
-/* The cube a ball stands for. */
+/* The cube a ball stands for: the sphere's radius padded by the margin of
+ * every culling test (sphere_pad, accel/cones.h). */
 static inline Box ball_box(Ball b)
 {
-  V4 c = {b[0], b[1], b[2], 0.0f}, e = {b[3], b[3], b[3], 0.0f};
+  Sphere s = {.center = {{b[0], b[1], b[2]}}, .radius = b[3]};
+  float h = b[3] + sphere_pad(&s);
+  V4 c = {b[0], b[1], b[2], 0.0f}, e = {h, h, h, 0.0f};
   return (Box){c - e, c + e};
+}
+
+/* Where a build reads its balls: ball k is the 16 bytes at at + k * stride
+ * (16-byte aligned), so that the spheres of a scene's instances are read
+ * where they are (stride sizeof(Instance)) instead of being copied first. */
+typedef struct Balls {
+  const char *at;
+  size_t stride;
+} Balls;
+
+static inline Ball balls_get(Balls b, int k)
+{
+  Ball v;
+  memcpy(&v, b.at + (size_t)k * b.stride, sizeof v);
+  return v;
 }
 
 /* A node with bounds `box`, and a node's bounds as a box. */
@@ -59,7 +81,7 @@ typedef struct Bvh {
  * (leaf_max >= n: the root is one leaf of all of them). Deterministic (same
  * input, same tree, for any number of threads). False (one line printed)
  * when out of memory; bvh is then empty. */
-bool bvh_build(Bvh *bvh, const Ball *balls, int n, int leaf_max);
+bool bvh_build(Bvh *bvh, Balls balls, int n, int leaf_max);
 
 /* Free the tree; a second call is harmless. */
 void bvh_free(Bvh *bvh);

@@ -19,7 +19,7 @@ static uint32_t spread3(uint32_t x)
 
 /* (code << 32 | k) for each ball k: its centre's Morton code on a cubic grid
  * over the centres' bounds (a flat scene is not cut along its thin axis). */
-static void morton_codes(const Ball *items, int n, uint64_t *pair)
+static void morton_codes(Balls items, int n, uint64_t *pair)
 {
   Box cb = sah_box_empty();
   float lo0 = cb.lo[0], lo1 = cb.lo[1], lo2 = cb.lo[2];
@@ -27,7 +27,7 @@ static void morton_codes(const Ball *items, int n, uint64_t *pair)
 #pragma omp parallel for schedule(static) if (n > 65536) \
     reduction(min : lo0, lo1, lo2) reduction(max : hi0, hi1, hi2)
   for (int k = 0; k < n; k++) {
-    V4 c = items[k];
+    V4 c = balls_get(items, k);
     lo0 = c[0] < lo0 ? c[0] : lo0, hi0 = c[0] > hi0 ? c[0] : hi0;
     lo1 = c[1] < lo1 ? c[1] : lo1, hi1 = c[1] > hi1 ? c[1] : hi1;
     lo2 = c[2] < lo2 ? c[2] : lo2, hi2 = c[2] > hi2 ? c[2] : hi2;
@@ -41,8 +41,9 @@ static void morton_codes(const Ball *items, int n, uint64_t *pair)
 #pragma omp parallel for schedule(static) if (n > 65536)
   for (int k = 0; k < n; k++) {
     uint32_t q[3];
+    V4 c = balls_get(items, k);
     for (int a = 0; a < 3; a++) { /* clamped before the conversion */
-      float x = (items[k][a] - cb.lo[a]) * scale;
+      float x = (c[a] - cb.lo[a]) * scale;
       x = x > 0.0f ? x : 0.0f;
       q[a] = (uint32_t)(x < (float)((1 << MORTON_BITS) - 1) ? x : (1 << MORTON_BITS) - 1);
     }
@@ -128,7 +129,7 @@ void morton_runs(const uint64_t *sorted, int first, int count, int max, MortonRu
   morton_runs(sorted, mid, first + count - mid, max, c);
 }
 
-bool morton_sort(const Ball *items, int n, int *ids, uint64_t *scratch)
+bool morton_sort(Balls items, int n, int *ids, uint64_t *scratch)
 {
   morton_codes(items, n, scratch);
   if (!sort_pairs(scratch, n))

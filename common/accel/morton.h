@@ -15,7 +15,7 @@
  * pairs (code << 32 | index), which the radix sort uses; it leaves the
  * sorted pairs in scratch[n .. 2n) (scratch must not overlap ids). The same
  * for any number of threads. False when out of memory. */
-bool morton_sort(const Ball *items, int n, int *ids, uint64_t *scratch);
+bool morton_sort(Balls items, int n, int *ids, uint64_t *scratch);
 
 /* Runs of the sorted codes, each of at most `max` balls. */
 typedef struct MortonRuns {
