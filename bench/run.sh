@@ -3,7 +3,9 @@
 # and POV-Ray side by side, in one run. Writes docs/benchmarks.md, its plots
 # docs/bench/*.png and the CSV files they are drawn from (docs/bench/*.csv).
 # It reports; it never fails on a figure. Environment: BENCH_RUNS (default 9)
-# repetitions of the throughput timings, BENCH_ERR_RUNS (3) of the error
+# repetitions of the throughput timings, BENCH_PAIRS (21) pairs of the two
+# rows timed in turn (step 05 against POV-Ray, 10^3 against 10^6 spheres:
+# their medians move least with more pairs), BENCH_ERR_RUNS (3) of the error
 # sweeps, THREADS_ALL (default: nproc) the "all cores" thread count,
 # BENCH_PARTS (default: all of them) the parts to run, among: throughput
 # tracing step05 error07 error08 threads scaling report (threads reads the
@@ -13,7 +15,7 @@
 set -uo pipefail
 cd "$(dirname "$0")/.."
 B=build/bench; D=docs/bench; BIN=build/bin; REF=$B/refs
-RUNS=${BENCH_RUNS:-9}; ERUNS=${BENCH_ERR_RUNS:-3}; ALL=${THREADS_ALL:-$(nproc)}
+RUNS=${BENCH_RUNS:-9}; PAIRS=${BENCH_PAIRS:-21}; ERUNS=${BENCH_ERR_RUNS:-3}; ALL=${THREADS_ALL:-$(nproc)}
 PARTS=" ${BENCH_PARTS:-throughput tracing step05 error07 error08 threads scaling report} "
 PREBUILT=${BENCH_PREBUILT:-}
 part() { [[ "$PARTS" == *" $1 "* ]]; }
@@ -138,10 +140,10 @@ fi
 if part step05; then
 echo "renderer,threads,trace_med,wall_med" > "$D/step05.csv"
 if [ -n "$POV" ] && have 05-shadows; then
-  log "step 05 and POV-Ray in turn ($RUNS pairs)"
+  log "step 05 and POV-Ray in turn ($PAIRS pairs)"
   for t in $TLIST; do
     o=""; p=""
-    for _ in $(seq "$RUNS"); do
+    for _ in $(seq "$PAIRS"); do
       o+="$(ours 05-shadows --scene scenes/spheres.scene --threads "$t" -o "$B/tp.png")"$'\n'
       p+="$(pov +W$W +H$H +WT"$t" Declare=Step=5 +Opov5.png)"$'\n'
     done
@@ -306,9 +308,9 @@ if part scaling && have 05-shadows; then
   # The target's ratio from pairs run in turn (10^3 then 10^6), so that a
   # machine whose speed drifts during the run moves both: docs/reliability.md,
   # "Fifth pass", saw 3-run medians one after the other give 3.9 to 5.1.
-  log "10^6 against 10^3 spheres, whole process, $RUNS pairs in turn"
+  log "10^6 against 10^3 spheres, whole process, $PAIRS pairs in turn"
   echo "pair,wall_1000,wall_1000000,ratio" > "$D/ratio6.csv"
-  for k in $(seq "$RUNS"); do
+  for k in $(seq "$PAIRS"); do
     read -r _ _ w3 < <(ours 05-shadows --scene "$B/spheres-1000.scene" --threads 2 -o "$B/s.pfm")
     read -r _ _ w6 < <(ours 05-shadows --scene "$B/spheres-1000000.scene" --threads 2 -o "$B/s.pfm")
     awk -v k="$k" -v a="$w3" -v b="$w6" 'BEGIN {printf "%d,%s,%s,%.4f\n", k, a, b, b / a}' >> "$D/ratio6.csv"
