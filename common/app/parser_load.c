@@ -42,9 +42,9 @@ static bool parse_whole(const char *file, const char *text, size_t len, Scene *s
  * parse goes on (piece k of `want` about (2 (want - k) - 1) / want^2 of the
  * text), so that the threads, taking them in turn, finish close together: a
  * thread the machine slows down holds the others up by at most one small
- * piece. With pieces of one size, one thread of two waited a median 7 ms
- * (up to 19 ms) for the other at the end of the 10^6-sphere parse
- * (docs/reliability.md, "Thirteenth pass"). */
+ * piece. With pieces of one size, one thread of two waited a median 7.7 ms
+ * (up to 18.6 ms) for the other at the end of the 10^6-sphere parse, now
+ * 2.2 ms (up to 6.5 ms; docs/reliability.md, "Thirteenth pass"). */
 static int cut_pieces(const char *text, size_t from, size_t len, int want, size_t *start)
 {
   int n = 1;
