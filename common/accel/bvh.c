@@ -88,8 +88,8 @@ static void order_pair(int *a, int *b)
 /* A leaf's ids in increasing order. Up to 4 (the hierarchy's leaves) by a
  * sorting network without branches: Morton order puts a 2 x 2 block's ids
  * in an order the branches of an insertion sort mispredicted, and its swaps
- * reloaded what they had just stored (a quarter of cluster_node's samples
- * in `perf`); more by insertion. */
+ * reloaded what they had just stored (about a fifth of cluster_node's
+ * samples in `perf`); more by insertion. */
 static void sort_leaf(int *ids, int count)
 {
   if (count > 4) {

@@ -222,8 +222,8 @@ bool parser_load_chunks(const char *file, const char *text, size_t len, Scene *s
   if (chunks < 2)
     return parse_whole(file, text, len, scene);
   int want = chunks < PIECES_MAX ? chunks : PIECES_MAX;
-  /* A header of at most a sixteenth of a piece (parsed alone, while the
-   * other threads wait) becomes piece 0: h = 1. */
+  /* A header of at most a sixteenth of a piece's mean share (parsed alone,
+   * while the other threads wait) becomes piece 0: h = 1. */
   size_t start[PIECES_MAX + 2];
   size_t head = header_length(text, len, len / ((size_t)want * 16));
   int h = head > 0;
