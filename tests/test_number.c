@@ -172,18 +172,21 @@ Test(number, reads_only_the_bytes_it_is_given)
 /* number_prefix, as the parser's fast path calls it: on the scene text, which
  * goes on after the word. Each random word is followed by a byte that ends
  * it (a space, a newline, '#') or may continue it ('.', 'e', a digit,
- * 'x'), then 20 more bytes (the reader looks at 8 bytes at a time); where
- * number_prefix reads a number, it must be number_parse's float for the
- * bytes it read, and it must stop at the end of a word the next byte ends.
- * Plain decimals of fewer than 8 digits on each side of the point, as
- * scenes write them (%g, %.6f), must be read. */
+ * 'x'), then 20 more bytes (the reader looks at 8 bytes at a time), or in
+ * every fifth word nothing more (it reads words of the form [-]D.F apart when
+ * 12 bytes are left); where number_prefix reads a number, it must be
+ * number_parse's float for the bytes it read, and it must stop at the end of
+ * a word the next byte ends. Plain decimals of fewer than 8 digits on each
+ * side of the point, as scenes write them (%g, %.6f, %.6g), must be read. */
 Test(number, prefix_reads_as_number_parse_up_to_where_it_stops, .timeout = 60)
 {
   Check c = CHECK("number_prefix", DOC);
   uint64_t s = 0x5851F42D4C957F2Dull;
   static const char after[] = " \n#.e5x";
   static const char *const odd[] = {".", "-", "+", "-.", "5.", ".5", "0.", "-0", "00000001.5",
-                                    "1234567.1234567", "12345678", "1.12345678", "7e", "1.5e3"};
+                                    "1234567.1234567", "12345678", "1.12345678", "7e", "1.5e3",
+                                    "0.00123456", "-0.00123456", "1.123456789", "9.99999999",
+                                    "-1.6777216", "1.6777215", "-0.0", "0.5E1", "1.5e", "-.5"};
   const int n_odd = (int)(sizeof odd / sizeof *odd);
   for (int k = 0; k < 300000 + n_odd; k++) {
     char word[64], text[128];
@@ -192,7 +195,8 @@ Test(number, prefix_reads_as_number_parse_up_to_where_it_stops, .timeout = 60)
       snprintf(word, sizeof word, "%s", odd[k]);
     } else if (plain) {
       double v = (double)(next(&s) % 20000001) / 1000.0 - 10000.0;
-      snprintf(word, sizeof word, k % 4 == 1 ? "%g" : "%.6f", v / pow(10.0, (double)(next(&s) % 4)));
+      snprintf(word, sizeof word, k % 6 == 1 ? "%g" : k % 6 == 3 ? "%.6f" : "%.6g",
+               v / pow(10.0, (double)(next(&s) % 8)));
     } else {
       random_word(&s, word, sizeof word);
     }
@@ -203,7 +207,7 @@ Test(number, prefix_reads_as_number_parse_up_to_where_it_stops, .timeout = 60)
     for (int j = 1; j <= 20; j++) /* printable, or in a third of the words any byte */
       text[len + j] = (char)(k % 3 ? ' ' + next(&s) % 95 : 1 + next(&s) % 255);
     float got = 0.0f, want = 0.0f;
-    const char *stop = number_prefix(text, text + len + 21, &got);
+    const char *stop = number_prefix(text, text + len + (k % 5 ? 21 : 1), &got);
     bool ends = end == ' ' || end == '\n' || end == '#';
     if (!stop) {
       CHECK_THAT(&c, !(plain && ends), "'%s' then '%c': expected a number read, got none",

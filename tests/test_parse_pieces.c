@@ -420,3 +420,71 @@ Test(parse_pieces, sphere_lines_read_fast_parse_as_the_general_path, .timeout = 
              "20000, found %d good", good);
   CHECK_DONE(&c);
 }
+
+/* Many sphere lines in one text, their material names from a set that
+ * sphere_line remembers in part (the last 8 it found): names of 1 to 20
+ * bytes, some a prefix of another or the same length and equal to it in
+ * their first 8 or 15 bytes, lines that end in a space, a '\r', a comment or an extra word, or
+ * at the end of the text; the same scene, or the same message, as the
+ * general path. */
+Test(parse_pieces, sphere_lines_naming_many_materials_parse_as_the_general_path,
+     .timeout = 60)
+{
+  Check c = CHECK("parser_statements", "docs/reliability.md, \"Fourteenth pass\"");
+  static const char *const names[] = {
+      "r", "red", "redd", "red_1", "green", "abcdefg", "abcdefgh", "abcdefghi",
+      "abcdefghZZ", "abcdefghYY", "abcdefghijklmno", "abcdefghijklmnop", "abcdefghijklmnopq",
+      "abcdefghijklmnopqrst",
+      "gold", "white", "Blue", "x_9"};
+  static const char *const other[] = {"undefined", "abcdefghijklmnox", "re", "9x", "late"};
+  static const char *const tails[] = {"", "", "", "", "", "", " ", "\r", "#c", " x", " # c"};
+  const int n_names = (int)(sizeof names / sizeof *names);
+  uint64_t s = 0x13198A2E03707344ull;
+  int good = 0;
+  for (int k = 0; k < 1500; k++) {
+    static char text[1 << 14];
+    size_t len = (size_t)snprintf(text, sizeof text, "film 8 6\n");
+    for (int m = 0; m < n_names; m++)
+      len += (size_t)snprintf(text + len, sizeof text - len, "material %s diffuse 1 1 1\n",
+                              names[m]);
+    int lines = 1 + (int)(next(&s) % 40);
+    bool odd = k % 3 == 0; /* a text with one line that is not right */
+    int bad = (int)(next(&s) % (uint64_t)lines);
+    for (int j = 0; j < lines; j++) {
+      double x = ((double)(next(&s) % 2000001) - 1000000.0) / 1e5;
+      double r = (double)(next(&s) % 100000 + 1) / 1e7;
+      const char *name = names[next(&s) % (uint64_t)n_names];
+      const char *tail = "";
+      if (odd && j == bad) {
+        if (next(&s) % 2)
+          name = pick(&s, other, sizeof other / sizeof *other);
+        else
+          tail = pick(&s, tails, sizeof tails / sizeof *tails);
+      }
+      len += (size_t)snprintf(text + len, sizeof text - len,
+                              "sphere center %.6g %.6g %.6g radius %.6g material %s%s%s", x, r,
+                              -x / 3.0, r, name, tail, j + 1 < lines || k % 2 ? "\n" : "");
+    }
+    if (k % 4 == 1)
+      len += (size_t)snprintf(text + len, sizeof text - len, "material late diffuse 1 1 1\n");
+    char err_f[512], err_g[512];
+    Scene a, b;
+    parser_fast_lines = true; /* in 1 to 3 pieces, each with its own names to remember */
+    bool ok_f = parse_in_pieces(text, len, 1 + k % 3, &a, err_f, sizeof err_f);
+    parser_fast_lines = false;
+    bool ok_g = parse_in_pieces(text, len, 1, &b, err_g, sizeof err_g);
+    good += ok_g;
+    CHECK_THAT(&c, same_parse(ok_g, err_g, &b, ok_f, err_f, &a),
+               "text %d (%d sphere lines):\n  expected (general path) %s%.200s\n  got (fast "
+               "path)      %s%.200s", k, lines, ok_g ? "a scene" : "the error ", err_g,
+               ok_f ? (ok_g ? "a different scene" : "a scene") : "the error ", err_f);
+    if (ok_f)
+      scene_free(&a);
+    if (ok_g)
+      scene_free(&b);
+  }
+  parser_fast_lines = true;
+  CHECK_THAT(&c, good > 900 && good < 1400, "expected both good and bad texts among the "
+             "1500, found %d good", good);
+  CHECK_DONE(&c);
+}

@@ -216,14 +216,13 @@ bool parser_pending_merge(Parser *p, const Parser *q, int first_instance)
   return ok;
 }
 
-/* Add a lit instance whose material is the name token `name`; a material
- * not defined yet is resolved at the end. A piece writes in place, and fails
- * (silently: the whole text is then parsed again) should it find more shapes
- * than its room, one a line. */
-static bool add_shape(Parser *p, Instance *inst, const Token *name)
+/* Add a lit instance whose material, the name token `name`, is
+ * inst->material (-1: not defined yet, resolved at the end). A piece writes
+ * in place, and fails (silently: the whole text is then parsed again) should
+ * it find more shapes than its room, one a line. */
+static bool place_shape(Parser *p, Instance *inst, const Token *name)
 {
   Scene *s = p->scene;
-  inst->material = names_find(&p->names, materials(p), name->s, name->len);
   inst->light = -1;
   if (inst->material < 0) {
     inst->material = 0;
@@ -237,6 +236,13 @@ static bool add_shape(Parser *p, Instance *inst, const Token *name)
   s->instances[s->n_instances++] = *inst;
   s->n_shapes = s->n_instances;
   return true;
+}
+
+/* place_shape, the material looked up by its name. */
+static bool add_shape(Parser *p, Instance *inst, const Token *name)
+{
+  inst->material = names_find(&p->names, materials(p), name->s, name->len);
+  return place_shape(p, inst, name);
 }
 
 static bool st_sphere(Parser *p)
@@ -310,6 +316,46 @@ static const char *number_then_space(const char *s, const char *end, float *v)
   return stop && stop < end && *stop == ' ' && stop - s < LEXER_TOKEN_MAX ? stop + 1 : NULL;
 }
 
+/* The word at s, up to the first '\n' or ' ' within 16 bytes: its length,
+ * with its bytes in w[0], w[1], zero past it; -1 (w unset) when there is no
+ * such byte there or fewer than 16 bytes are left. The first byte flagged by
+ * (x - 0x01..) & ~x & 0x80.. is x's first zero byte (a borrow runs only
+ * past a zero byte). */
+static int name_words(const char *s, const char *end, uint64_t w[2])
+{
+  if (end - s < 16)
+    return -1;
+  memcpy(w, s, 2 * sizeof *w);
+  const uint64_t ones = 0x0101010101010101u, highs = 0x8080808080808080u;
+  for (int k = 0; k < 2; k++) {
+    uint64_t nl = w[k] ^ 0x0A0A0A0A0A0A0A0Au, sp = w[k] ^ 0x2020202020202020u;
+    uint64_t stop = (((nl - ones) & ~nl) | ((sp - ones) & ~sp)) & highs;
+    if (stop) {
+      int n = __builtin_ctzll(stop) >> 3;
+      w[k] &= n ? ~0ull >> (64 - 8 * n) : 0;
+      if (k == 0)
+        w[1] = 0;
+      return 8 * k + n;
+    }
+  }
+  return -1;
+}
+
+/* The material of a name sphere_line found before (w, len as name_words
+ * gives them); -1 when it is not one of the last RECENT_NAMES found. Such a
+ * name passed lexer_name_valid then, and names_find gives the same index
+ * now: a material's index never changes while a text is parsed. */
+static int recent_find(const Parser *p, const uint64_t w[2], int len)
+{
+  unsigned n = p->n_recent < RECENT_NAMES ? p->n_recent : RECENT_NAMES;
+  for (unsigned k = 0; k < n; k++) {
+    const RecentName *r = &p->recent[k];
+    if (r->len == len && r->w[0] == w[0] && r->w[1] == w[1])
+      return r->material;
+  }
+  return -1;
+}
+
 /* The line a large scene is made of, `sphere center X Y Z radius R material
  * NAME`, read straight from the text: one space between words, plain
  * decimals, the name last and then the end of the line. 1 when it was such a
@@ -338,17 +384,29 @@ static int sphere_line(Parser *p)
     return 0;
   s += 9;
   const char *name = s;
-  while (s < end && *s != '\n' && *s != ' ' && s - name < LEXER_TOKEN_MAX)
-    s++;
-  if ((s < end && *s != '\n') || !lexer_name_valid(name, (int)(s - name), MATERIAL_NAME_MAX - 1))
-    return 0;
+  uint64_t w[2];
+  int len = name_words(name, end, w);
+  int material = len > 0 && name[len] == '\n' ? recent_find(p, w, len) : -1;
+  if (material >= 0) {
+    s += len;
+  } else {
+    while (s < end && *s != '\n' && *s != ' ' && s - name < LEXER_TOKEN_MAX)
+      s++;
+    if ((s < end && *s != '\n') ||
+        !lexer_name_valid(name, (int)(s - name), MATERIAL_NAME_MAX - 1))
+      return 0;
+    material = names_find(&p->names, materials(p), name, (int)(s - name));
+    if (material >= 0 && len > 0)
+      p->recent[p->n_recent++ % RECENT_NAMES] = (RecentName){{w[0], w[1]}, len, material};
+  }
   lx->line++;
   lx->n = lx->pos = 0;
   lx->next = s < end ? s + 1 : s;
   Instance inst = {.shape = SHAPE_SPHERE,
-                   .sphere = {.center = {{v[0], v[1], v[2]}}, .radius = v[3]}};
+                   .sphere = {.center = {{v[0], v[1], v[2]}}, .radius = v[3]},
+                   .material = material};
   Token tok = {name, (int)(s - name), (int)(name - line) + 1};
-  return add_shape(p, &inst, &tok) ? 1 : -1;
+  return place_shape(p, &inst, &tok) ? 1 : -1;
 }
 
 /* The references to materials defined after their use, in file order. */

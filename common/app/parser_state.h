@@ -4,6 +4,8 @@
 #ifndef RT_PARSER_STATE_H
 #define RT_PARSER_STATE_H
 
+#include <stdint.h>
+
 #include "app/lexer.h"
 #include "app/names.h"
 #include "scene.h"
@@ -24,6 +26,15 @@ typedef struct ForwardName {
   char name[MATERIAL_NAME_MAX];
 } ForwardName;
 
+/* A material name a sphere line found (common/app/parser.c, sphere_line):
+ * its bytes as two words, zero past its length (at most 16 bytes). */
+typedef struct RecentName {
+  uint64_t w[2];
+  int len, material;
+} RecentName;
+
+enum { RECENT_NAMES = 8 };
+
 typedef struct Parser {
   Lexer lx;
   Scene *scene;
@@ -37,6 +48,8 @@ typedef struct Parser {
   int room; /* 0: shapes go to the scene's growing array; > 0: a piece of a
              * large text (parser_load.c), whose shapes go in place to
              * scene->instances[0 .. room), an array it does not own */
+  RecentName recent[RECENT_NAMES]; /* the last names sphere_line found */
+  unsigned n_recent;                /* how many it added, the oldest replaced */
 } Parser;
 
 /* The scene's materials as records of the names table. */
