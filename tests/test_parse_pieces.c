@@ -379,6 +379,31 @@ static size_t sphere_variant(uint64_t *s, char *out, size_t size)
   return len;
 }
 
+/* `text` parsed with sphere_line (parser_fast_lines) in `pieces` pieces and
+ * by the general path whole: one check that they give the same scene or
+ * the same message (`what` names the text). Whether the general path read
+ * a scene. */
+static bool fast_as_general(Check *c, const char *text, size_t len, int pieces,
+                            const char *what)
+{
+  char err_f[512], err_g[512];
+  Scene a, b;
+  parser_fast_lines = true;
+  bool ok_f = parse_in_pieces(text, len, pieces, &a, err_f, sizeof err_f);
+  parser_fast_lines = false;
+  bool ok_g = parse_in_pieces(text, len, 1, &b, err_g, sizeof err_g);
+  parser_fast_lines = true;
+  CHECK_THAT(c, same_parse(ok_g, err_g, &b, ok_f, err_f, &a),
+             "%s:\n  expected (general path) %s%.200s\n  got (fast path)      %s%.200s", what,
+             ok_g ? "a scene" : "the error ", err_g,
+             ok_f ? (ok_g ? "a different scene" : "a scene") : "the error ", err_f);
+  if (ok_f)
+    scene_free(&a);
+  if (ok_g)
+    scene_free(&b);
+  return ok_g;
+}
+
 /* The sphere lines that parser_statements reads straight from the text
  * (sphere_line) against the general path (parser_fast_lines off): 20000
  * lines, each alone between a material defined before and one defined
@@ -398,22 +423,10 @@ Test(parse_pieces, sphere_lines_read_fast_parse_as_the_general_path, .timeout = 
     if (k % 4 < 2) /* `late` defined after its use */
       len += (size_t)snprintf(text + len, sizeof text - len, "%smaterial late diffuse 1 1 1\n",
                               newline ? "" : "\n");
-    char err_f[512], err_g[512];
-    Scene a, b;
-    parser_fast_lines = true;
-    bool ok_f = parse_in_pieces(text, len, 1, &a, err_f, sizeof err_f);
-    parser_fast_lines = false;
-    bool ok_g = parse_in_pieces(text, len, 1, &b, err_g, sizeof err_g);
-    good += ok_g;
-    CHECK_THAT(&c, same_parse(ok_g, err_g, &b, ok_f, err_f, &a),
-               "the line '%.*s'%s:\n  expected (general path) %s%.200s\n  got (fast path)  "
-               "    %s%.200s", (int)n, line, newline ? " and a newline" : "",
-               ok_g ? "a scene" : "the error ", err_g,
-               ok_f ? (ok_g ? "a different scene" : "a scene") : "the error ", err_f);
-    if (ok_f)
-      scene_free(&a);
-    if (ok_g)
-      scene_free(&b);
+    char what[600];
+    snprintf(what, sizeof what, "the line '%.*s'%s", (int)n, line,
+             newline ? " and a newline" : "");
+    good += fast_as_general(&c, text, len, 1, what);
   }
   parser_fast_lines = true;
   CHECK_THAT(&c, good > 5000 && good < 18000, "expected both good and bad lines among the "
@@ -467,21 +480,9 @@ Test(parse_pieces, sphere_lines_naming_many_materials_parse_as_the_general_path,
     }
     if (k % 4 == 1)
       len += (size_t)snprintf(text + len, sizeof text - len, "material late diffuse 1 1 1\n");
-    char err_f[512], err_g[512];
-    Scene a, b;
-    parser_fast_lines = true; /* in 1 to 3 pieces, each with its own names to remember */
-    bool ok_f = parse_in_pieces(text, len, 1 + k % 3, &a, err_f, sizeof err_f);
-    parser_fast_lines = false;
-    bool ok_g = parse_in_pieces(text, len, 1, &b, err_g, sizeof err_g);
-    good += ok_g;
-    CHECK_THAT(&c, same_parse(ok_g, err_g, &b, ok_f, err_f, &a),
-               "text %d (%d sphere lines):\n  expected (general path) %s%.200s\n  got (fast "
-               "path)      %s%.200s", k, lines, ok_g ? "a scene" : "the error ", err_g,
-               ok_f ? (ok_g ? "a different scene" : "a scene") : "the error ", err_f);
-    if (ok_f)
-      scene_free(&a);
-    if (ok_g)
-      scene_free(&b);
+    char what[64]; /* the fast path in 1 to 3 pieces, each remembering its own names */
+    snprintf(what, sizeof what, "text %d (%d sphere lines, %d pieces)", k, lines, 1 + k % 3);
+    good += fast_as_general(&c, text, len, 1 + k % 3, what);
   }
   parser_fast_lines = true;
   CHECK_THAT(&c, good > 900 && good < 1400, "expected both good and bad texts among the "
