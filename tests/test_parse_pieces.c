@@ -437,9 +437,9 @@ Test(parse_pieces, sphere_lines_read_fast_parse_as_the_general_path, .timeout = 
 /* Many sphere lines in one text, their material names from a set that
  * sphere_line remembers in part (the last 8 it found): names of 1 to 20
  * bytes, some a prefix of another or the same length and equal to it in
- * their first 8 or 15 bytes, lines that end in a space, a '\r', a comment or an extra word, or
- * at the end of the text; the same scene, or the same message, as the
- * general path. */
+ * their first 8 or 15 bytes; lines that end in a space, a '\r', a comment
+ * or an extra word, or at the end of the text; the same scene, or the same
+ * message, as the general path. */
 Test(parse_pieces, sphere_lines_naming_many_materials_parse_as_the_general_path,
      .timeout = 60)
 {

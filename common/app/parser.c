@@ -370,8 +370,9 @@ static int recent_find(const Parser *p, const uint64_t w[2], int len)
  * general path accepts, with the same floats (number_prefix stops where the
  * lexer's word ends, at the space, and reads it as number_parse does) and
  * the same checks (bounds_coordinate_ok, bounds_length_ok,
- * lexer_name_valid); tests/test_parse_pieces.c compares the two on altered
- * sphere lines. The 10^6-sphere scene's one-thread parse: docs/reliability.md,
+ * lexer_name_valid, which a name among the last RECENT_NAMES found has
+ * passed already: recent_find); tests/test_parse_pieces.c compares the two
+ * on altered sphere lines and on texts of many lines and names. The 10^6-sphere scene's one-thread parse: docs/reliability.md,
  * "Fourth pass". */
 static int sphere_line(Parser *p)
 {
