@@ -305,9 +305,9 @@ if part scaling && have 05-shadows; then
       --threads 2 -o "$B/s.pfm")
     echo "$n,$rm,$rlo,$rhi,$wm,$wlo,$whi" >> "$D/scaling.csv"
   done
-  # The target's ratio from pairs run in turn (10^3 then 10^6), so that a
-  # machine whose speed drifts during the run moves both: docs/reliability.md,
-  # "Fifth pass", saw 3-run medians one after the other give 3.9 to 5.1.
+  # The ratio from pairs run in turn (10^3 then 10^6), so that a machine
+  # whose speed drifts during the run moves both processes alike: medians of
+  # separate runs taken one after the other drift apart.
   log "10^6 against 10^3 spheres, whole process, $PAIRS pairs in turn"
   echo "pair,wall_1000,wall_1000000,ratio" > "$D/ratio6.csv"
   for k in $(seq "$PAIRS"); do

@@ -2,8 +2,7 @@
  * pages_populate the whole pages of the range are resident (mincore) and
  * what they held is kept; pages outside it stay unmapped. A file's pages
  * entered in the page table and taken out again by the threads (present
- * bits of /proc/self/pagemap). docs/reliability.md, "Eighth pass", "Ninth
- * pass". */
+ * bits of /proc/self/pagemap). docs/reliability.md, "Large scenes". */
 #define _DEFAULT_SOURCE /* mincore, MAP_ANONYMOUS */
 #include "check.h"
 
@@ -16,7 +15,7 @@
 
 #include "pages.h"
 
-#define DOC "docs/reliability.md, \"Eighth pass\""
+#define DOC "docs/reliability.md, \"Large scenes\""
 
 enum { PAGES = 64 };
 

@@ -119,7 +119,7 @@ Test(parse_pieces, pieces_in_parallel_parse_as_the_whole)
 
 /* Shapes that name materials defined only further down, so that in every
  * piece but the last the names are forward references (each piece keeps each
- * name once, docs/reliability.md, "Second pass"), and, when `undefined`, one
+ * name once, docs/reliability.md, "Large scenes"), and, when `undefined`, one
  * name that is never defined: the same scene, or the same message, in 2 to 9
  * pieces as whole. */
 static void forward_references(Check *c, bool undefined)
@@ -166,19 +166,19 @@ static void forward_references(Check *c, bool undefined)
 
 Test(parse_pieces, forward_references_resolve_as_in_the_whole)
 {
-  Check c = CHECK("parser_load_chunks", "docs/reliability.md, \"Second pass\"");
+  Check c = CHECK("parser_load_chunks", "docs/reliability.md, \"Large scenes\"");
   forward_references(&c, false);
   forward_references(&c, true);
   CHECK_DONE(&c);
 }
 
 /* Every piece writes its shapes in place, in room for one a line
- * (docs/reliability.md, "Fifth pass"), the last line counted even without a
+ * (docs/reliability.md, "Large scenes"), the last line counted even without a
  * newline: a text of shapes only, its last line a shape with no newline,
  * parses in 2 to 9 pieces as whole, and never again whole. */
 Test(parse_pieces, shapes_fit_their_pieces_room)
 {
-  Check c = CHECK("parser_load_chunks", "docs/reliability.md, \"Fifth pass\"");
+  Check c = CHECK("parser_load_chunks", "docs/reliability.md, \"Large scenes\"");
   static char text[1 << 16];
   size_t len = (size_t)snprintf(text, sizeof text, "material m diffuse 1 1 1\n");
   for (int k = 0; k < 400; k++)
@@ -204,8 +204,8 @@ Test(parse_pieces, shapes_fit_their_pieces_room)
 
 /* A header (the lines before the first sphere) and 3000 spheres in 2 to 9
  * pieces, as whole, and never again whole. When the spheres name only the
- * header's materials, each piece, given them (docs/reliability.md, "Sixth
- * pass"), leaves no reference pending; when pieces define materials of their
+ * header's materials, each piece, given them (docs/reliability.md, "Large
+ * scenes"), leaves no reference pending; when pieces define materials of their
  * own, used by later spheres, those keep their place after the header's. */
 static void header_and_spheres(Check *c, bool own_materials)
 {
@@ -251,7 +251,7 @@ static void header_and_spheres(Check *c, bool own_materials)
 
 Test(parse_pieces, header_materials_reach_every_piece)
 {
-  Check c = CHECK("parser_load_chunks", "docs/reliability.md, \"Sixth pass\"");
+  Check c = CHECK("parser_load_chunks", "docs/reliability.md, \"Large scenes\"");
   header_and_spheres(&c, false);
   header_and_spheres(&c, true);
   CHECK_DONE(&c);
@@ -411,7 +411,7 @@ static bool fast_as_general(Check *c, const char *text, size_t len, int pieces,
  * message. */
 Test(parse_pieces, sphere_lines_read_fast_parse_as_the_general_path, .timeout = 60)
 {
-  Check c = CHECK("parser_statements", "docs/reliability.md, \"Fourth pass\"");
+  Check c = CHECK("parser_statements", "docs/reliability.md, \"Large scenes\"");
   uint64_t s = 0x243F6A8885A308D3ull;
   int good = 0;
   for (int k = 0; k < 20000; k++) {
@@ -443,7 +443,7 @@ Test(parse_pieces, sphere_lines_read_fast_parse_as_the_general_path, .timeout = 
 Test(parse_pieces, sphere_lines_naming_many_materials_parse_as_the_general_path,
      .timeout = 60)
 {
-  Check c = CHECK("parser_statements", "docs/reliability.md, \"Fourteenth pass\"");
+  Check c = CHECK("parser_statements", "docs/reliability.md, \"Large scenes\"");
   static const char *const names[] = {
       "r", "red", "redd", "red_1", "green", "abcdefg", "abcdefgh", "abcdefghi",
       "abcdefghZZ", "abcdefghYY", "abcdefghijklmno", "abcdefghijklmnop", "abcdefghijklmnopq",
