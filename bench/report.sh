@@ -143,7 +143,7 @@ whole process: the command's wall clock, scene read and picture written.
 Raw data: [docs/bench/](bench/). How the fast paths work:
 [performance.md](performance.md).
 
-## Headline: the targets of issue 11
+## Headline: the targets
 
 All cores: ${all_note}. Pictures at 800x600.
 

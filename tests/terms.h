@@ -106,9 +106,9 @@ static inline bool terms_one(const char *term, int w, int h, const char *args, d
 /* After the image test: the report's pictures and details, and when it
  * failed, the terms compared. `msg` receives what the student should read
  * (empty when it passed). tol and max in 1/255, fraction a share. With
- * RT_TERMS=0 in the environment the terms are not rendered (check-regions
- * and check-starter read only the verdict: with sphere_hit_t stubbed, step
- * 08's image test took 6.9 s with the terms, 1.9 s without, at -O1). */
+ * RT_TERMS=0 in the environment the terms are not rendered: check-regions
+ * and check-starter read only the verdict, and rendering each term again
+ * would take most of a failing image test's time. */
 static inline void terms_after_image_test(int w, int h, const float *out, const float *ref,
                                           double tol, double fraction, double max,
                                           bool pass, const char *args, char *msg, size_t size)

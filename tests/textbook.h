@@ -28,9 +28,9 @@ static inline float textbook_sphere_t(const Sphere *s, Ray r, float tmax)
 }
 
 /* The robust ray-sphere of common/sphere.c (quick reject included) with
- * b = -f.d and c = f.f - r^2 formed in float from the rounded f, as they were
- * before they moved to double: the stress tests and bench/robust-cost.c
- * price that choice. */
+ * b = -f.d and c = f.f - r^2 formed in float from the rounded f instead of in
+ * double (docs/02-intersection.md's first refinement left out): the stress
+ * tests and bench/robust-cost.c price that choice. */
 static inline float float_bc_sphere_t(const Sphere *s, Ray r, float tmax)
 {
   vec3s f = glms_vec3_sub(r.o, s->center);
