@@ -174,6 +174,10 @@ $(BUILD)/tests/stress: $(STRESS_OBJ) $(LIBCOMMON)
 	@$(CC) $(CFLAGS) $(LDFLAGS) $^ $(LDLIBS) -lcriterion -lmpfr -lgmp -o $@
 STRESSBIN := $(if $(STRESS_TESTS),$(BUILD)/tests/stress)
 
+# make test: the student's command (README.md, "For students: the loop").
+# Every present step's unit and image tests, the stress, reliability and
+# trace tests, then the report; nothing that checks the course rather than
+# the student's code (that is make check, below).
 # make test-build: what make test runs, built and not run (make -j2
 # test-build builds it two at a time; CI does, before make test).
 test-build: $(TESTBIN) $(STRESSBIN) $(BUILD)/bin/04-phong $(BUILD)/bin/05-shadows \
@@ -181,7 +185,6 @@ test-build: $(TESTBIN) $(STRESSBIN) $(BUILD)/bin/04-phong $(BUILD)/bin/05-shadow
 test: test-build
 	@tests/run.sh $(TESTBIN) $(STRESSBIN) $(TRACE_TESTBIN); status=$$?; \
 	  $(REPORT_AFTER_TEST) || status=1; \
-	  $(if $(SAN),,$(foreach t,$(TEST_AFTER),$(MAKE) --no-print-directory $(t) || status=1;)) \
 	  exit $$status
 
 # The stress tests render through steps 04, 05 and tools/mistakes.c (docs/accuracy.md).
@@ -251,6 +254,28 @@ bench-accuracy: $(BUILD)/bin/robust-cost
 
 clean:
 	rm -rf $(BUILD)
+
+# ---------------------------------------------------------------- the course's checks
+# make check: the instructor's command (docs/instructors.md, "make check"):
+# make test, then every check of the course rather than of a student's code,
+# stage by stage, each stage's time printed. A failed stage does not stop the
+# next ones; make check fails at the end, naming the stages that failed. make -j2 check runs
+# two jobs at a time inside a stage, each job's lines printed together.
+# .ci/run runs the same stages one by one (with check-regions-ci).
+CHECK_REGIONS ?= check-regions
+# A stage's targets joined by '+'.
+CHECK_STAGES = test check-derived check-report test-grade check-starter+$(CHECK_REGIONS) sanitize fuzz
+check:
+	@bad=; for s in $(CHECK_STAGES); do s=$${s//+/ }; t0=$$(date +%s); \
+	  echo "==== make check: $$s"; \
+	  $(MAKE) --no-print-directory -Orecurse $$s || bad="$$bad, $$s"; \
+	  echo "==== make check: $$s ($$(($$(date +%s) - t0)) s)"; done; \
+	if [ -n "$$bad" ]; then echo "make check: FAILED: $${bad#, }"; exit 1; fi; \
+	echo "make check: every stage passed"
+
+# The files derived from the sources are up to date, every citation exists.
+check-derived: check-diffs check-refs check-mutants check-images check-traces
+.PHONY: check check-derived
 
 help:
 	@echo "Build and test"
