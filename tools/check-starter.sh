@@ -5,7 +5,8 @@
 #   2. then, for K = 1 .. 8, the student writes step K (the solution's code,
 #      put where a student writes it: tools/carry.sh --solution) and runs
 #      make carry K+1: make test-step K must pass and make test-step K+1 fail.
-#      --full: every step at every stage (steps 1..K pass, K+1..8 fail).
+#      --full: every step at every stage (steps 1..K pass, K+1..8 fail);
+#   3. with every step written, the student's make test passes.
 # Usage: tools/check-starter.sh DIR [--full]   (DIR is removed and rewritten)
 # README.md, "For instructors".
 set -uo pipefail
@@ -74,6 +75,16 @@ for stage in 1 2 3 4 5 6 7 8; do
     [ $bad -eq $before ] && say "steps 1..$stage written$([ $stage -lt 8 ] && echo ", make carry $((stage + 1))"): make test-step $stage passes$([ $stage -lt 8 ] && echo ", $((stage + 1)) fails")"
   fi
 done
+
+# The student's command, once every region is written.
+if [ $bad -eq 0 ] && [ "$stage" = 8 ]; then
+  # shellcheck disable=SC2086 # QUICK is two words on purpose
+  if RT_TERMS=0 make -C "$dir" --no-print-directory -j2 $QUICK test >"$log" 2>&1; then
+    say "every step written: make test passes"
+  else
+    fail "make test should pass (every step written), it fails:"; show_log
+  fi
+fi
 
 if [ $bad -gt 0 ]; then
   say "$bad problem(s) ($(( $(date +%s) - start )) s)"
