@@ -1,5 +1,5 @@
 # Ray-tracing course: build every step, render it, test it, measure it.
-# `make` builds and renders all steps; `make test` runs every test; `make help`
+# `make` builds and renders all steps; `make test` tests them (`make check`: the course); `make help`
 # lists the other targets. GNU make 4, gcc, Debian packages (installed below).
 
 SHELL := /bin/bash
@@ -174,6 +174,10 @@ $(BUILD)/tests/stress: $(STRESS_OBJ) $(LIBCOMMON)
 	@$(CC) $(CFLAGS) $(LDFLAGS) $^ $(LDLIBS) -lcriterion -lmpfr -lgmp -o $@
 STRESSBIN := $(if $(STRESS_TESTS),$(BUILD)/tests/stress)
 
+# make test: the student's command (README.md, "For students: the loop").
+# Every present step's unit and image tests, the stress, reliability and
+# trace tests, then the report; nothing that checks the course rather than
+# the student's code (that is make check, below).
 # make test-build: what make test runs, built and not run (make -j2
 # test-build builds it two at a time; CI does, before make test).
 test-build: $(TESTBIN) $(STRESSBIN) $(BUILD)/bin/04-phong $(BUILD)/bin/05-shadows \
@@ -181,7 +185,6 @@ test-build: $(TESTBIN) $(STRESSBIN) $(BUILD)/bin/04-phong $(BUILD)/bin/05-shadow
 test: test-build
 	@tests/run.sh $(TESTBIN) $(STRESSBIN) $(TRACE_TESTBIN); status=$$?; \
 	  $(REPORT_AFTER_TEST) || status=1; \
-	  $(if $(SAN),,$(foreach t,$(TEST_AFTER),$(MAKE) --no-print-directory $(t) || status=1;)) \
 	  exit $$status
 
 # The stress tests render through steps 04, 05 and tools/mistakes.c (docs/accuracy.md).
@@ -252,46 +255,66 @@ bench-accuracy: $(BUILD)/bin/robust-cost
 clean:
 	rm -rf $(BUILD)
 
+# ---------------------------------------------------------------- the course's checks
+# make check: the instructor's command (docs/instructors.md, "make check"):
+# make test, then every check of the course rather than of a student's code,
+# stage by stage, each stage's time printed. A failed stage does not stop the
+# next ones; make check fails at the end, naming the stages that failed. make -j2 check runs
+# two jobs at a time inside a stage, each job's lines printed together.
+# .ci/run runs the same stages one by one (with check-regions-ci).
+CHECK_REGIONS ?= check-regions
+# A stage's targets joined by '+'.
+CHECK_STAGES = test check-derived check-report test-grade check-starter+$(CHECK_REGIONS) sanitize fuzz
+check:
+	@bad=; for s in $(CHECK_STAGES); do s=$${s//+/ }; t0=$$(date +%s); \
+	  echo "==== make check: $$s"; \
+	  $(MAKE) --no-print-directory -Orecurse $$s || bad="$$bad, $$s"; \
+	  echo "==== make check: $$s ($$(($$(date +%s) - t0)) s)"; done; \
+	if [ -n "$$bad" ]; then echo "make check: FAILED: $${bad#, }"; exit 1; fi; \
+	echo "make check: every stage passed"
+
+# The files derived from the sources are up to date, every citation exists.
+check-derived: check-diffs check-refs check-mutants check-images check-traces
+.PHONY: check check-derived
+
 help:
-	@echo "Build and test"
+	@echo "For students (README.md)"
 	@echo "  make              build every step and render its default scene to $(BUILD)/out/"
-	@echo "  make test         every unit, stress, image, reliability and trace test, the report, the sample class graded"
-	@echo "  make test-build   build what make test runs, without running it (make -j2 test-build: two at a time)"
+	@echo "  make test         every present step's unit and image tests, the stress, reliability and trace tests, the report"
 	@echo "  make test-step N  step N's unit tests and image test, one verdict line per check (N = 1 .. 8)"
+	@echo "  make trace-step N [X Y]  step N's traces against the solution's: the first line that differs"
+	@echo "  make carry N      in a starter tree: copy your code of the steps below N into steps N to 8"
+	@echo "  make report       write $(BUILD)/report/index.html from the last test results"
 	@echo "  make stress       the numerical stress tests alone"
 	@echo "  make test-reliability  the bad-input suite, the number reader, output files, fuzz corpus"
-	@echo "Seeing why (docs/tracing.md)"
-	@echo "  make trace-step N [X Y]  step N's traces against the solution's: the first line that differs"
-	@echo "  make report       write $(BUILD)/report/index.html from the last test results"
-	@echo "  make traces       rewrite the reference traces tests/traces/ (on purpose only)"
-	@echo "  make trace-mistakes  the pictures and traces of the docs' 'Seeing the mistake' (on purpose only)"
-	@echo "Students and instructors (README, docs/grading.md)"
+	@echo "  make test-build   build what make test runs, without running it (make -j2 test-build: two at a time)"
+	@echo "For instructors (docs/instructors.md)"
+	@echo "  make check        make test, then every check of the course, stage by stage:"
+	@echo "    make check-derived   check-diffs, check-refs, check-mutants, check-images, check-traces"
+	@echo "    make check-report    the report in headless Chromium"
+	@echo "    make test-grade      grade the sample class and check every verdict, the pages, Gradescope"
+	@echo "    make check-starter   play a student through the starter, step by step, then make test"
+	@echo "    make check-regions   stub each solution region alone: its step and later pictures must fail"
+	@echo "    make sanitize        the whole suite under AddressSanitizer + UBSan, gcc's and clang's"
+	@echo "    make fuzz            fuzz the scene reader, the command line and a render, FUZZ_SECONDS each"
+	@echo "  make check-regions-ci  check-regions for the intersection, camera, film and shading regions (CI)"
+	@echo "  make regions      list the solution regions"
 	@echo "  make starter      write the student starter tree to $(BUILD)/starter (N=5: steps 1-4 stay solved)"
-	@echo "  make carry N      in a starter tree: copy your code of the steps below N into steps N to 8"
+	@echo "  make mutants      run the realistic student bugs through every step, write docs/mutants.md"
+	@echo "  make valgrind     the whole suite under valgrind"
+	@echo "Grading (docs/grading.md)"
 	@echo "  make grade SUBMISSIONS=DIR [HIDDEN=DIR] [POINTS=FILE] [JOBS=N]  grade a class into $(BUILD)/grade/"
 	@echo "  make gradescope   pack the grader for Gradescope ($(BUILD)/gradescope/autograder.zip)"
 	@echo "  make sample-class write the sample class of submissions to $(BUILD)/sample-class"
-	@echo "  make test-grade   grade the sample class and check every verdict (part of make test)"
-	@echo "  make test-grade-slurm, make test-grade-ssh  the same through a one-node Slurm / parallel --sshlogin"
-	@echo "Checks that keep the course honest (docs/testing-the-tests.md; CI runs most)"
-	@echo "  make check-starter  play a student through the starter, step by step"
-	@echo "  make check-regions  stub each solution region alone: its step and later pictures must fail"
-	@echo "  make check-regions-ci  the same for the intersection, camera, film and shading regions"
-	@echo "  make regions      list the solution regions"
-	@echo "  make mutants      run the realistic student bugs through every step, write docs/mutants.md"
-	@echo "  make check-mutants  every mutant still applies to the code"
-	@echo "  make check-diffs, check-refs, check-images, check-traces  derived files and citations up to date"
-	@echo "Reliability (docs/reliability.md)"
-	@echo "  make sanitize     the whole suite under AddressSanitizer + UBSan, gcc's and clang's"
-	@echo "  make valgrind     the whole suite under valgrind (an x86-64-v3 build in build/vg)"
-	@echo "  make fuzz         fuzz the scene reader, the command line and a render, FUZZ_SECONDS each"
+	@echo "  make test-grade-slurm, make test-grade-ssh  the sample class through a one-node Slurm / parallel --sshlogin"
 	@echo "Performance (docs/benchmarks.md, docs/performance.md)"
 	@echo "  make bench        measure speed and error against POV-Ray, write docs/benchmarks.md"
 	@echo "  make bench-accuracy  time step 05's frame, robust vs textbook geometry (docs/accuracy.md)"
 	@echo "Generated files (on purpose only)"
 	@echo "  make images       regenerate the reference images in images/"
+	@echo "  make traces       rewrite the reference traces tests/traces/"
 	@echo "  make diffs        write docs/diffs/NN-name.diff (each step against the previous)"
-	@echo "  make mistakes     render the shadow/ambient mistake pictures into docs/img/"
+	@echo "  make mistakes, make trace-mistakes  the pictures and traces of the docs' mistakes"
 	@echo "  make clean        remove $(BUILD)/"
 
 starter:

@@ -30,10 +30,11 @@ gradescope: grade-deps
 sample-class:
 	@tools/grading/sample-class.sh $(BUILD)/sample-class
 
-# make test grades the sample class (in parallel, with the sample hidden
-# scenes), checks every verdict against sample-class.txt, the pages in
-# Chromium and the Gradescope autograder on one submission. A test's limit
-# is at least 3 s there, not 5 (docs/grading.md, "The sample class").
+# make test-grade (part of make check) grades the sample class (in parallel,
+# with the sample hidden scenes), checks every verdict against
+# sample-class.txt, the pages in Chromium and the Gradescope autograder on one
+# submission. A test's limit is at least 3 s there, not 5 (docs/grading.md,
+# "The sample class").
 GRADE_TEST := $(BUILD)/grade-test
 GRADE_SAMPLE_HIDDEN := tools/grading/sample-hidden
 grade-test-deps: grade-deps
@@ -51,18 +52,15 @@ test-grade: grade-test-deps $(BUILD)/bin/grade-compare $(BUILD)/bin/report-check
 	else echo "FAIL  grading the sample class:"; cat $(GRADE_TEST)/check.log; exit 1; fi; \
 	REPORT_CHECK=$(BUILD)/bin/report-check tools/grading/page-test.sh $(GRADE_TEST)/out correct larger-root && \
 	tools/gradescope/test.sh $(GRADE_TEST)/class $(GRADE_TEST)/out area-no-cos
-# make test runs it last (TEST_AFTER, in the Makefile's test recipe); the
-# sanitizer builds leave it out (it builds its own trees, without them).
-TEST_AFTER += test-grade
 
 # The same class through a Slurm job array on a one-node Slurm started for
-# the test (as root), compared with the local grading. Not in make test.
+# the test (as root), compared with the local grading. Not in make check.
 test-grade-slurm: test-grade
 	-@$(call need_debs,$(DEB_GRADE_SLURM))
 	@tools/grading/slurm-test.sh $(GRADE_TEST)/class $(GRADE_SAMPLE_HIDDEN) $(GRADE_TEST)/out
 
 # Two submissions through GNU parallel --sshlogin on two host names, with a
-# stand-in for ssh; compared with the local grading. Not in make test.
+# stand-in for ssh; compared with the local grading. Not in make check.
 test-grade-ssh: test-grade
 	@tools/grading/ssh-test.sh $(GRADE_TEST)/class $(GRADE_SAMPLE_HIDDEN) $(GRADE_TEST)/out
 

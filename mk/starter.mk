@@ -1,5 +1,5 @@
 # The starter tree as a student meets it, and the checks that the tree says
-# what it does (README.md, "For instructors").
+# what it does (docs/instructors.md, "Checks of the starter").
 #   make carry N        copy your code of the steps below N into steps N .. 8
 #   make check-starter  the starter builds, fails exactly the unwritten steps,
 #                       and passes steps 1..K once a student wrote them

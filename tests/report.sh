@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The report in a real browser (docs/tracing.md, "The report"), run by make
-# test after it writes BUILD/report/index.html. Headless Chromium renders two
-# reports to screenshots and tools/report-check.c finds every picture of the
-# page in them (a missing or broken picture shows as a small icon instead):
+# check-report after make test wrote BUILD/report/index.html. Headless
+# Chromium renders two reports to screenshots and tools/report-check.c finds
+# every picture of the page in them (a missing or broken picture shows as a
+# small icon instead):
 #   1. BUILD/report/index.html, the one make test just wrote;
 #   2. a scratch copy (BUILD/report-test) where step 03 passes and step 04
 #      fails: its reference pictures are rendered from a scene whose red
@@ -14,7 +15,7 @@ set -uo pipefail
 build=${1:?usage: tests/report.sh BUILD}
 browser=$(command -v chromium || true)
 if [ -z "$browser" ]; then
-  echo "SKIP  report in a browser: chromium is not installed (make test installs it when"
+  echo "SKIP  report in a browser: chromium is not installed (make check installs it when"
   echo "      run as root; otherwise: sudo apt-get install chromium)"
   exit 0
 fi

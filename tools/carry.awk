@@ -1,5 +1,6 @@
 # The student's regions of a C source file of a starter tree, for
-# tools/carry.sh (README.md, "For instructors"). tools/stub.awk writes them:
+# tools/carry.sh (docs/instructors.md, "Carrying code forward").
+# tools/stub.awk writes them:
 #   <indent>/* BEGIN step NN: NAME */
 #   ...the student's code (at first a TODO(step NN) line and a stub)...
 #   <indent>/* END step NN */

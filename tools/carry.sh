@@ -12,7 +12,7 @@
 # Nothing is written unless every region to copy is finished (no TODO(step NN)
 # line left) and every marker is in place; a file whose region held different
 # code of the student's is saved under carry-backup/ first.
-# README.md, "For instructors"; tools/carry.awk reads the regions.
+# docs/instructors.md, "Carrying code forward"; tools/carry.awk reads the regions.
 set -euo pipefail
 
 usage() {

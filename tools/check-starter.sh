@@ -5,9 +5,11 @@
 #   2. then, for K = 1 .. 8, the student writes step K (the solution's code,
 #      put where a student writes it: tools/carry.sh --solution) and runs
 #      make carry K+1: make test-step K must pass and make test-step K+1 fail.
-#      --full: every step at every stage (steps 1..K pass, K+1..8 fail).
+#      --full: every step at every stage (steps 1..K pass, K+1..8 fail);
+#   3. with every step written, the student's make test passes (step 8's
+#      test-step is part of it).
 # Usage: tools/check-starter.sh DIR [--full]   (DIR is removed and rewritten)
-# README.md, "For instructors".
+# docs/instructors.md, "Checks of the starter".
 set -uo pipefail
 [ $# -ge 1 ] && [ $# -le 2 ] || { echo "usage: tools/check-starter.sh DIR [--full]" >&2; exit 2; }
 dir=$1 full=${2:-}
@@ -68,12 +70,25 @@ for stage in 1 2 3 4 5 6 7 8; do
   if [ -n "$full" ]; then
     for k in 1 2 3 4 5 6 7 8; do test_step $k "$([ $k -le $stage ] && echo pass || echo fail)"; done
     [ $bad -eq $before ] && say "steps 1..$stage written: make test-step 1..$stage pass, the others fail"
-  else
+  elif [ $stage -lt 8 ]; then
     test_step $stage pass
-    [ $stage -lt 8 ] && test_step $((stage + 1)) fail
-    [ $bad -eq $before ] && say "steps 1..$stage written$([ $stage -lt 8 ] && echo ", make carry $((stage + 1))"): make test-step $stage passes$([ $stage -lt 8 ] && echo ", $((stage + 1)) fails")"
+    test_step $((stage + 1)) fail
+    [ $bad -eq $before ] && say "steps 1..$stage written, make carry $((stage + 1)): make test-step $stage passes, $((stage + 1)) fails"
   fi
+  [ $stage -eq 8 ] && all_written=1
 done
+
+# Every step written: the student's make test (every step's tests, step 8's
+# included, then the stress, reliability and trace tests) must pass.
+if [ "${all_written:-0}" = 1 ]; then
+  t0=$(date +%s)
+  # shellcheck disable=SC2086 # QUICK is two words on purpose
+  if RT_TERMS=0 make -C "$dir" --no-print-directory -j2 $QUICK test >"$log" 2>&1; then
+    say "steps 1..8 written: make test passes ($(( $(date +%s) - t0 )) s)"
+  else
+    fail "make test should pass (steps 1..8 written), it fails:"; show_log
+  fi
+fi
 
 if [ $bad -gt 0 ]; then
   say "$bad problem(s) ($(( $(date +%s) - start )) s)"

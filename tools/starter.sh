@@ -4,7 +4,7 @@
 # between /* BEGIN step NN: FUNCTION */ and /* END step NN */ (tools/carry.sh
 # finds the student's code there).
 # Usage: tools/starter.sh DIR [N]   (N: keep the solutions of steps below N)
-# README.md, "For instructors", explains the regions and what a student gets.
+# docs/instructors.md, "The starter tree", explains the regions and what a student gets.
 set -euo pipefail
 
 usage() { echo "usage: tools/starter.sh DIR [N]   (N = 1 .. 8: steps below N stay solved)" >&2; exit 2; }

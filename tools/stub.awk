@@ -1,6 +1,6 @@
 # The solution regions of a C source file, for tools/starter.sh,
-# tools/regions.sh, tools/check-regions.sh and tools/carry.sh (README.md, "For
-# instructors"). A region is
+# tools/regions.sh, tools/check-regions.sh and tools/carry.sh
+# (docs/instructors.md, "The starter tree"). A region is
 #   /* BEGIN SOLUTION step NN */ ...the solution... [/* HINT: ... */]
 #   [/* STUB: code */] /* END SOLUTION */
 #

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# make test's check of the Gradescope autograder (docs/grading.md,
+# make test-grade's check of the Gradescope autograder (docs/grading.md,
 # "Gradescope"): the zip of make gradescope unpacked into a temporary root
 # (AUTOGRADER_ROOT), setup.sh and run_autograder run there on one submission
 # of the sample class, and results.json checked against the fields of

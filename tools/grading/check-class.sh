@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# make test's check of the grader on the sample class (docs/grading.md, "The
-# sample class"): every submission of tools/grading/sample-class.txt must
+# make test-grade's check of the grader on the sample class (docs/grading.md,
+# "The sample class"): every submission of tools/grading/sample-class.txt must
 # fail exactly the checks its "fails:" line names, and its total in
 # grades.csv must be the maximum less the points of those checks.
 # Usage: tools/grading/check-class.sh OUT   (OUT: where make grade wrote)

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# make test's check of the grader's pages in a real browser (docs/grading.md,
+# make test-grade's check of the grader's pages in a browser (docs/grading.md,
 # "Outputs"): headless Chromium loads the class page and the pages of the
 # students named, each from a copy with a script that counts the pictures the
 # browser decoded (the pages themselves have none); every <img> of a page
@@ -15,7 +15,7 @@ out=$(realpath -- "$1")
 shift
 browser=$(command -v chromium || true)
 if [ -z "$browser" ]; then
-  echo "SKIP  grader pages in a browser: chromium is not installed (make test installs it when run as"
+  echo "SKIP  grader pages in a browser: chromium is not installed (make check installs it when run as"
   echo "      root; otherwise: sudo apt-get install chromium)"
   exit 0
 fi
