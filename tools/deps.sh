@@ -279,6 +279,9 @@ config() {
   echo "CONFIG_CC := $cc"
   echo "CONFIG_STB := $stbmode"
   echo "CC_KIND := $kind"
+  echo "CC_MACHINE := $($cc -dumpmachine 2>/dev/null)"
+  # macOS hides madvise and memmem under _POSIX_C_SOURCE unless asked.
+  [ "$(uname -s)" = Darwin ] && echo "SYS_CFLAGS := -D_DARWIN_C_SOURCE"
   echo "CC_LTO := $lto"
   echo "OMP_CFLAGS := ${omp%%|*}"
   echo "OMP_LIBS := ${omp#*|}"
