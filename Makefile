@@ -106,7 +106,8 @@ LDLIBS  := $(OMP_LIBS) $(LIB_LIBS) $(STB_LIBS) -lm
 # switch matches no shape): the programs' link leaves them out. Each file's
 # compile step keeps both warnings.
 LDFLAGS := $(if $(CC_LTO),-fno-lto) $(filter -L%,$(TEST_LIBS))
-# The tests' own files: compiled without LTO's second copy (they link without it).
+# Files no LTO link reads (the tests', common/app's): compiled without LTO's
+# second copy.
 TEST_OBJ_FLAGS := $(if $(CC_LTO),-fno-lto)
 PROG_LDFLAGS = $(filter-out -fno-lto,$(LDFLAGS)) \
                $(if $(filter -flto%,$(CFLAGS)),-Wno-maybe-uninitialized -Wno-uninitialized)
@@ -179,6 +180,11 @@ $(BUILD)/obj/%.o: %.c | $(BUILD)/.deps
 	@echo "CC $<"
 	@$(CC) $(CFLAGS) $(PKG_CFLAGS) -c $< -o $@
 
+# The program around the lessons (command line, scene reader, image files,
+# traces, render loop) has nothing to inline into a pixel function: compiled
+# without LTO, it halves the programs' link (pictures the same; renders of
+# steps 05 and 08 within 2 %, docs/performance.md).
+$(BUILD)/obj/common/app/%.o: CFLAGS += $(TEST_OBJ_FLAGS)
 # stb's own code, not ours: its warnings are not the course's.
 $(BUILD)/obj/common/app/stb_impl.o: CFLAGS += -w
 $(LIBCOMMON): $(COMMON_OBJ)
