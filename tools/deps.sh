@@ -23,6 +23,7 @@ set -uo pipefail
 
 # ---------------------------------------------------------------- the system
 system() {
+  [ -z "${DEPS_SYSTEM:-}" ] || { echo "$DEPS_SYSTEM"; return; } # to try another's messages
   case "$(uname -s 2>/dev/null)" in
     Darwin) echo brew; return ;;
     MINGW* | MSYS* | CYGWIN*) echo msys2; return ;;
