@@ -1,6 +1,7 @@
 # Ray-tracing course: build every step, render it, test it, measure it.
 # `make` builds and renders all steps; `make test` tests them (`make check`: the course); `make help`
-# lists the other targets. GNU make 4, gcc, Debian packages (installed below).
+# lists the other targets. GNU make 4, gcc or clang, the libraries from
+# pkg-config (tools/deps.sh installs them on Debian as root).
 
 SHELL := /bin/bash
 .DEFAULT_GOAL := all
@@ -35,30 +36,81 @@ TESTS_08-area-lights    := area_light phong
 STRESS_TESTS := $(patsubst tests/%.c,%,$(wildcard tests/stress_*.c))
 
 # ---------------------------------------------------------------- flags
-# No -ffast-math and no fused multiply-add contraction: results must not change
-# with the optimiser's mood (docs/accuracy.md).
-CC      := gcc
-# -flto=auto: link-time optimisation inlines camera_ray, film_sample and the
-# shape tests into each step's pixel function (about 30 % faster, pictures
-# byte-identical; docs/performance.md). Fat objects: tools/ and bench/ link
-# build/libcommon.a with plain gcc, without -flto.
-OPT     ?= -O3 -march=native -flto=auto -ffat-lto-objects
-CFLAGS  := -std=c11 $(OPT) -g -fopenmp -ffp-contract=off -fno-math-errno \
-           -D_POSIX_C_SOURCE=200809L \
+# The compiler is Make's CC (cc unless given: make CC=clang). tools/deps.sh
+# probes it once per build folder into $(BUILD)/config.mk: gcc or clang, its
+# OpenMP flags, LTO, and the libraries' flags from pkg-config.
+CONFIG := $(BUILD)/config.mk
+# Goals that need no compiler: they run without probing it.
+NO_CONFIG_GOALS := clean help deps bench-deps grade-deps clang-deps valgrind-deps
+ifneq ($(MAKECMDGOALS),)
+  ifeq ($(filter-out $(NO_CONFIG_GOALS),$(MAKECMDGOALS)),)
+    SKIP_CONFIG := 1
+  endif
+endif
+ifndef SKIP_CONFIG
+  -include $(CONFIG)
+endif
+
+# Results must not change with the optimiser's mood (docs/accuracy.md): no
+# -ffast-math, no fused multiply-add contraction, on every compiler. FP_FLAGS_gcc
+# and FP_FLAGS_clang take what one compiler alone needs.
+FP_FLAGS       := -ffp-contract=off -fno-math-errno
+FP_FLAGS_gcc   :=
+FP_FLAGS_clang :=
+# The default build runs on every x86-64 or arm64 machine (no -march); make
+# NATIVE=1 tunes for this CPU (-march=native: a binary that may not run on
+# another machine). gcc adds link-time optimisation with fat objects (CC_LTO):
+# LTO inlines camera_ray, film_sample and the shape tests into each step's
+# pixel function (docs/performance.md); the tests and tools link the same
+# objects without it.
+# -mno-fma (x86-64): cglm's SIMD code calls fused multiply-add intrinsics
+# where the target has FMA (camera_ray's glms_mat4_mulv3), which
+# -ffp-contract=off does not reach; without them NATIVE=1 draws the default
+# build's pictures bit for bit.
+NATIVE_FLAGS := -march=native $(if $(filter x86_64% amd64%,$(CC_MACHINE)),-mno-fma)
+OPT     ?= -O3 $(if $(NATIVE),$(NATIVE_FLAGS)) $(CC_LTO)
+# -Werror where the warnings are known clean (gcc 12 to 14, clang 14); a
+# compiler of another version may warn where these do not: make WERROR= keeps
+# its warnings warnings.
+WERROR  ?= -Werror
+# OpenMP where the compiler has it; without it (or with OPENMP=0) one thread,
+# the same pictures (common/threads.h).
+ifndef OPENMP
+  OPENMP := $(if $(OMP_CFLAGS),1,0)
+endif
+ifeq ($(OPENMP),0)
+  OMP_CFLAGS := -Wno-unknown-pragmas
+  OMP_LIBS   :=
+endif
+# stb as the system ships it: Debian's compiled libstb (pkg-config stb, -lstb),
+# or headers only, compiled in by common/app/stb_impl.c. STB=headers takes the
+# headers even where libstb is; STB_CFLAGS=-I/dir names a folder of them.
+STB_CFLAGS ?= $(STB_CFLAGS_FOUND)
+STB_LIBS   ?= $(if $(filter command,$(origin STB_CFLAGS)),,$(STB_LIBS_FOUND))
+STB_IMPL   := $(if $(STB_LIBS),,1)
+
+CFLAGS  := -std=c11 $(OPT) -g $(OMP_CFLAGS) $(FP_FLAGS) $(FP_FLAGS_$(CC_KIND)) \
+           -D_POSIX_C_SOURCE=200809L $(SYS_CFLAGS) \
            -Wall -Wextra -Wpedantic -Wshadow -Wstrict-prototypes \
-           -Wmissing-prototypes -Werror -MMD -MP -Icommon
+           -Wmissing-prototypes $(WERROR) -MMD -MP -Icommon
 # TRACE_OFF=1: the trace hooks compiled out (make bench's comparison build;
 # --trace and --aov then record nothing).
 CFLAGS  += $(if $(TRACE_OFF),-DTRACE_COMPILED_OUT)
-# pkg-config runs when a recipe needs it, after the dependency check below.
-PKG_CFLAGS = $(shell pkg-config --cflags cglm stb libpng zlib)
-LDLIBS  := -fopenmp -lpng -lz -lstb -lm
-# Link flags only: with -flto, gcc 12 re-runs its warnings at link time and
-# reports false -Wmaybe-uninitialized / -Wuninitialized on `Hit hit;` in the
-# steps (scene_intersect fills it whenever it returns true; gcc follows a path
-# where instance_hit_fill's switch matches no shape). Each file's compile step
-# keeps both warnings.
-LDFLAGS := -Wno-maybe-uninitialized -Wno-uninitialized
+PKG_CFLAGS = $(LIB_CFLAGS) $(STB_CFLAGS) $(filter -I%,$(TEST_CFLAGS))
+LDLIBS  := $(OMP_LIBS) $(LIB_LIBS) $(STB_LIBS) -lm
+# Every link but the steps' programs: without LTO (the fat objects' code),
+# so that a test or tool links in a moment. gcc 12 with -flto re-runs its
+# warnings at link time and reports false -Wmaybe-uninitialized /
+# -Wuninitialized on `Hit hit;` in the steps (scene_intersect fills it
+# whenever it returns true; gcc follows a path where instance_hit_fill's
+# switch matches no shape): the programs' link leaves them out. Each file's
+# compile step keeps both warnings.
+LDFLAGS := $(if $(CC_LTO),-fno-lto) $(filter -L%,$(TEST_LIBS))
+# Files no LTO link reads (the tests', common/app's): compiled without LTO's
+# second copy.
+TEST_OBJ_FLAGS := $(if $(CC_LTO),-fno-lto)
+PROG_LDFLAGS = $(filter-out -fno-lto,$(LDFLAGS)) \
+               $(if $(filter -flto%,$(CFLAGS)),-Wno-maybe-uninitialized -Wno-uninitialized)
 SAN ?=
 # Any report ends the program, so a test that meets one fails. The clang
 # build of make sanitize passes its fuller set (mk/reliability.mk).
@@ -68,40 +120,58 @@ ifneq ($(SAN),)
   LDLIBS  += $(SAN_FLAGS)
 endif
 
+# A change of compiler or flags rebuilds everything: $(BUILD)/.flags holds
+# the last set, and every object depends on it (at the end of this file).
+FLAGS_SIG := $(CC) $(CFLAGS) $(PKG_CFLAGS) | $(LDFLAGS) $(LDLIBS)
+ifndef SKIP_CONFIG
+  ifneq ($(FLAGS_SIG),$(shell cat $(BUILD)/.flags 2>/dev/null))
+    $(shell mkdir -p $(BUILD) && printf '%s\n' '$(FLAGS_SIG)' > $(BUILD)/.flags)
+  endif
+endif
+
+$(BUILD)/.flags: ;
+
+# make test-step builds on every core unless make was given -j.
+NPROC = $(shell nproc 2>/dev/null || sysctl -n hw.ncpu 2>/dev/null || echo 2)
+JOBS_FLAG = $(if $(findstring -j,$(MAKEFLAGS)),,-j$(NPROC))
+
+# make print-flags: the flags as shell assignments, for the scripts that
+# compile a tool against $(BUILD)/libcommon.a (cglm's types follow -march).
+BUILD_KIND = $(if $(filter -march=native,$(CFLAGS)),native (make NATIVE=1: -march=native),portable (no -march)), $(CC_KIND)$(if $(filter -flto%,$(CFLAGS)), with LTO)$(if $(filter 0,$(OPENMP)), without OpenMP)
+print-flags:
+	@printf "CC='%s'\nCFLAGS='%s'\nLDFLAGS='%s'\nLDLIBS='%s'\nBUILD_KIND='%s'\n" '$(CC)' \
+	  '$(strip $(filter-out -MMD -MP,$(CFLAGS)) $(PKG_CFLAGS))' '$(strip $(LDFLAGS))' '$(strip $(LDLIBS))' '$(BUILD_KIND)'
+
 # ---------------------------------------------------------------- dependencies
-# Debian packages the build, the tests and the benchmark need. Run as root, the
-# Makefile installs what is missing; otherwise it prints the command to run.
-DEB_BUILD := gcc make pkg-config libc6-dev libstb-dev libcglm-dev libpng-dev zlib1g-dev \
-             libcriterion-dev libmpfr-dev
-DEB_BENCH := gnuplot-nox povray hyperfine
-
-define need_debs
-missing=$$(for p in $(1); do dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null \
-    | grep -q 'install ok installed' || echo $$p; done); \
-if [ -n "$$missing" ]; then \
-  if [ "$$(id -u)" = 0 ]; then \
-    echo "make: installing Debian packages:" $$missing; \
-    apt-get update -qq && DEBIAN_FRONTEND=noninteractive \
-      apt-get install -y -qq --no-install-recommends $$missing >/dev/null \
-      || { echo "make: apt-get install failed"; exit 1; }; \
-  else \
-    echo "make: missing Debian packages. Install them with:"; \
-    echo "  sudo apt-get update && sudo apt-get install -y" $$missing; exit 1; \
-  fi; \
-fi
-endef
-
-$(BUILD)/.deps: Makefile
+# tools/deps.sh check: the build's libraries through pkg-config. As root on
+# Debian/Ubuntu it installs what is missing (apt-get); elsewhere it prints the
+# one install command of the system (dnf, brew, pacman).
+$(BUILD)/.deps: Makefile tools/deps.sh
 	@mkdir -p $(@D)
-	@$(call need_debs,$(DEB_BUILD))
+	@tools/deps.sh check '$(CC)'
 	@touch $@
+
+$(CONFIG): $(BUILD)/.deps tools/deps.sh
+	@tools/deps.sh config '$(CC)' $(STB) > $@.tmp && mv $@.tmp $@
+ifndef SKIP_CONFIG
+  ifneq ($(CONFIG_CC) $(CONFIG_STB),$(CC) $(STB))
+    $(CONFIG): FORCE
+  endif
+endif
+FORCE:
+
+# Debian packages of the optional targets (the benchmark here, grading and
+# the sanitizers in mk/): installed as root, else the apt-get command.
+need_debs = tools/deps.sh debs $(1)
+DEB_BENCH := gnuplot-nox povray hyperfine
 
 deps: $(BUILD)/.deps
 bench-deps:
 	@$(call need_debs,$(DEB_BENCH))
 
 # ---------------------------------------------------------------- common library
-COMMON_SRC := $(wildcard common/*.c common/*/*.c)
+# common/app/stb_impl.c: stb compiled in, where the system has its headers only.
+COMMON_SRC := $(filter-out $(if $(STB_IMPL),,common/app/stb_impl.c),$(wildcard common/*.c common/*/*.c))
 COMMON_OBJ := $(COMMON_SRC:%.c=$(BUILD)/obj/%.o)
 LIBCOMMON  := $(BUILD)/libcommon.a
 
@@ -110,6 +180,13 @@ $(BUILD)/obj/%.o: %.c | $(BUILD)/.deps
 	@echo "CC $<"
 	@$(CC) $(CFLAGS) $(PKG_CFLAGS) -c $< -o $@
 
+# The program around the lessons (command line, scene reader, image files,
+# traces, render loop) has nothing to inline into a pixel function: compiled
+# without LTO, it halves the programs' link (pictures the same; renders of
+# steps 05 and 08 within 2 %, docs/performance.md).
+$(BUILD)/obj/common/app/%.o: CFLAGS += $(TEST_OBJ_FLAGS)
+# stb's own code, not ours: its warnings are not the course's.
+$(BUILD)/obj/common/app/stb_impl.o: CFLAGS += -w
 $(LIBCOMMON): $(COMMON_OBJ)
 	@rm -f $@
 	@ar rcs $@ $^
@@ -131,7 +208,7 @@ $(BUILD)/gen/$(1)-scene.c: $(SCENE_$(1)) tools/scene2c.sh
 $(BUILD)/bin/$(1): $$($(1)_OBJ) $(BUILD)/obj/gen/$(1)-scene.o $(LIBCOMMON)
 	@mkdir -p $$(@D)
 	@echo "LD $$@"
-	@$(CC) $(CFLAGS) $(LDFLAGS) $$^ $(LDLIBS) -o $$@
+	@$(CC) $(CFLAGS) $(PROG_LDFLAGS) $$^ $(LDLIBS) -o $$@
 
 $(BUILD)/out/$(1).png: $(BUILD)/bin/$(1)
 	@mkdir -p $$(@D)
@@ -142,12 +219,12 @@ $(1)_TOBJ := $$(patsubst %,$(BUILD)/obj/tests/$(1)/test_%.o,$$(TESTS_$(1))) \
 $(BUILD)/obj/tests/$(1)/%.o: tests/%.c | $(BUILD)/.deps
 	@mkdir -p $$(@D)
 	@echo "CC $$<  ($(1) test)"
-	@$(CC) $(CFLAGS) $$(PKG_CFLAGS) -Isteps/$(1) -Itests \
+	@$(CC) $(CFLAGS) $(TEST_OBJ_FLAGS) $$(PKG_CFLAGS) $(TEST_CFLAGS) -Isteps/$(1) -Itests \
 	  -DSTEP_NAME='"$(1)"' -DBUILD_DIR='"$(BUILD)"' -c $$< -o $$@
 $(BUILD)/tests/$(1): $$($(1)_TOBJ) $$($(1)_LIB) $(LIBCOMMON) $(BUILD)/bin/$(1)
 	@mkdir -p $$(@D)
 	@echo "LD $$@"
-	@$(CC) $(CFLAGS) $(LDFLAGS) $$(filter %.o %.a,$$^) $(LDLIBS) -lcriterion -lmpfr -lgmp -o $$@
+	@$(CC) $(CFLAGS) $(LDFLAGS) $$(filter %.o %.a,$$^) $(LDLIBS) $(TEST_LIBS) -o $$@
 endef
 $(foreach s,$(PRESENT),$(eval $(call step_rules,$(s))))
 
@@ -167,11 +244,11 @@ STRESS_OBJ := $(STRESS_TESTS:%=$(BUILD)/obj/tests/stress/%.o)
 $(BUILD)/obj/tests/stress/%.o: tests/%.c | $(BUILD)/.deps
 	@mkdir -p $(@D)
 	@echo "CC $<  (stress)"
-	@$(CC) $(CFLAGS) $(PKG_CFLAGS) -Itests -DBUILD_DIR='"$(BUILD)"' -c $< -o $@
+	@$(CC) $(CFLAGS) $(TEST_OBJ_FLAGS) $(PKG_CFLAGS) $(TEST_CFLAGS) -Itests -DBUILD_DIR='"$(BUILD)"' -c $< -o $@
 $(BUILD)/tests/stress: $(STRESS_OBJ) $(LIBCOMMON)
 	@mkdir -p $(@D)
 	@echo "LD $@"
-	@$(CC) $(CFLAGS) $(LDFLAGS) $^ $(LDLIBS) -lcriterion -lmpfr -lgmp -o $@
+	@$(CC) $(CFLAGS) $(LDFLAGS) $^ $(LDLIBS) $(TEST_LIBS) -o $@
 STRESSBIN := $(if $(STRESS_TESTS),$(BUILD)/tests/stress)
 
 # make test: the student's command (README.md, "For students: the loop").
@@ -204,7 +281,7 @@ test-step:
 	@if [ -z "$(STEP_N)" ]; then echo "make test-step: there is no step '$(N)' (steps are 1 .. 8)"; exit 2; fi
 	@if [ -z "$(filter $(STEP_N),$(PRESENT))" ]; then \
 	  echo "make test-step: step $(STEP_N) does not exist yet (no steps/$(STEP_N)/)"; exit 1; fi
-	@$(MAKE) --no-print-directory $(BUILD)/tests/$(STEP_N)
+	@$(MAKE) --no-print-directory $(JOBS_FLAG) $(BUILD)/tests/$(STEP_N)
 	@tests/run.sh --verbose $(BUILD)/tests/$(STEP_N); status=$$?; \
 	  $(REPORT_AFTER_STEP); exit $$status
 
@@ -288,6 +365,12 @@ help:
 	@echo "  make stress       the numerical stress tests alone"
 	@echo "  make test-reliability  the bad-input suite, the number reader, output files, fuzz corpus"
 	@echo "  make test-build   build what make test runs, without running it (make -j2 test-build: two at a time)"
+	@echo "Building (README.md, \"Set up\"; docs/performance.md, \"Build flags\")"
+	@echo "  make deps         check the libraries; as root on Debian, install the missing ones"
+	@echo "  make CC=clang     build with clang (BUILD=build/clang keeps both builds)"
+	@echo "  make NATIVE=1     tune for this CPU (the programs may not run on another machine)"
+	@echo "  make OPENMP=0     one thread, without OpenMP (the same pictures)"
+	@echo "  make print-flags  the compiler and flags in use"
 	@echo "For instructors (docs/instructors.md)"
 	@echo "  make check        make test, then every check of the course, stage by stage:"
 	@echo "    make check-derived   check-diffs, check-refs, check-mutants, check-images, check-traces"
@@ -326,4 +409,7 @@ starter:
 # Each tool's rules (fuzzing, grading, region checks, ...) in a file of its own.
 include $(wildcard mk/*.mk)
 
--include $(shell find $(BUILD)/obj -name '*.d' 2>/dev/null)
+DEPFILES := $(shell find $(BUILD)/obj -name '*.d' 2>/dev/null)
+-include $(DEPFILES)
+# Every object built before depends on the flags it was built with.
+$(DEPFILES:.d=.o): $(BUILD)/.flags
