@@ -53,9 +53,11 @@ static const vec3s EYE = {.x = 0.0f, .y = 1.0f, .z = 5.0f};
 static double estimate(const Scene *s, const Hit *h, uint32_t seed, int n, int kind,
                        uint64_t *rays)
 {
-  RenderSettings set = {.seed = seed, .samples = 1, .light_samples = n, .sampler = kind};
+  RenderSettings set = {.seed = seed, .sampler = (SamplerKind)kind};
   RenderCtx ctx = {.set = &set, .pixel = 7, .sample = 0};
-  vec3s c = shade_phong(s, h, EYE, &ctx);
+  Scene with_n = *s; /* shade_phong takes scene->light_samples samples */
+  with_n.light_samples = n;
+  vec3s c = shade_phong(&with_n, h, EYE, &ctx);
   if (rays)
     *rays = ctx.rays;
   return c.x;
@@ -66,7 +68,7 @@ static double estimate(const Scene *s, const Hit *h, uint32_t seed, int n, int k
 static double area(const Scene *s, const Hit *h, uint32_t seed, int n, int kind,
                    uint32_t pixel, uint32_t sample, uint64_t *rays)
 {
-  RenderSettings set = {.seed = seed, .samples = 1, .light_samples = n, .sampler = kind};
+  RenderSettings set = {.seed = seed, .sampler = (SamplerKind)kind};
   RenderCtx ctx = {.set = &set, .pixel = pixel, .sample = sample};
   vec3s v = glms_vec3_normalize(glms_vec3_sub(EYE, h->p));
   double e = shade_area(s, 0, h, v, n, &ctx).x;
@@ -490,7 +492,8 @@ Test(area_light, camera_sees_P_over_A_on_the_front_face_and_black_behind)
   /* 2 x 2 light at y = 3 facing down, power (6, 4, 2): L = P / 4. */
   Scene s;
   load(&s, "light area corner -1 3 -1 edge1 2 0 0 edge2 0 0 2 power 6 4 2");
-  RenderSettings set = {.seed = 1, .samples = 1, .light_samples = 4};
+  s.light_samples = 4;
+  RenderSettings set = {.seed = 1};
   RenderCtx ctx = {.set = &set};
   Check k = CHECK("shade_trace", "docs/08-area-lights.md, \"The light\"");
   Ray up = {.o = vec_make(0.3f, 1.0f, 0.2f), .d = vec_make(0.0f, 1.0f, 0.0f)};

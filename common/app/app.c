@@ -11,7 +11,7 @@
 #include "app/cli.h"
 #include "app/image.h"
 #include "app/parser.h"
-#include "app/trace.h"
+#include "app/trace_pixel.h"
 #include "sampler.h"
 
 /* Say once what the step leaves out of this scene or command line. */
@@ -191,8 +191,7 @@ int app_run(int argc, char **argv, const Step *step)
   say_ignored(step, &(Options){.seed = 1, .adaptive = -1.0f}, scene.info.ignored);
   SamplerKind kind = SAMPLER_CENTER;
   sampler_parse(o.sampler ? o.sampler : step->sampler ? step->sampler : "center", &kind);
-  RenderSettings set = {.threads = o.threads, .seed = o.seed, .samples = scene.samples,
-                        .light_samples = scene.light_samples, .sampler = (int)kind,
+  RenderSettings set = {.threads = o.threads, .seed = o.seed, .sampler = kind,
                         .adaptive = o.adaptive >= 0.0f ? o.adaptive : step->adaptive,
                         .progress = !o.quiet};
   if (o.trace_x >= 0) {

@@ -3,7 +3,7 @@
  * docs/scene-format.md, "Statements". */
 #include "app/light_statement.h"
 
-#include "app/bounds.h"
+#include "app/limits.h"
 
 static bool light_point(Lexer *lx, Light *light)
 {
@@ -11,7 +11,7 @@ static bool light_point(Lexer *lx, Light *light)
                              {"radius", KEY_NUM, false}};
   Field f[3];
   if (!fields_read(lx, "point light", keys, 3, f) ||
-      (f[2].set && !bounds_length(lx, &f[2], "radius")))
+      (f[2].set && !limits_length(lx, &f[2], "radius")))
     return false;
   *light = (Light){.type = LIGHT_POINT, .position = f[0].v, .power = f[1].v,
                    .radius = f[2].v.x};
@@ -23,7 +23,7 @@ static bool light_directional(Lexer *lx, Light *light)
   static const Key keys[] = {{"direction", KEY_VEC, true}, {"irradiance", KEY_COLOR, true}};
   Field f[2];
   if (!fields_read(lx, "directional light", keys, 2, f) ||
-      !bounds_direction(lx, &f[0], "direction"))
+      !limits_direction(lx, &f[0], "direction"))
     return false;
   *light = (Light){.type = LIGHT_DIRECTIONAL, .direction = glms_vec3_normalize(f[0].v),
                    .irradiance = f[1].v};
@@ -36,7 +36,7 @@ static bool light_area(Lexer *lx, Light *light)
                              {"edge2", KEY_POINT, true}, {"power", KEY_POWER, true}};
   Field f[4];
   if (!fields_read(lx, "area light", keys, 4, f) ||
-      !bounds_edges(lx, &f[1], &f[2]))
+      !limits_edges(lx, &f[1], &f[2]))
     return false;
   *light = (Light){.type = LIGHT_AREA, .quad = quad_make(f[0].v, f[1].v, f[2].v),
                    .power = f[3].v};

@@ -12,7 +12,7 @@
 
 #include "film.h"
 #include "grow.h"
-#include "app/bounds.h"
+#include "app/limits.h"
 #include "app/light_statement.h"
 #include "app/number.h"
 
@@ -87,9 +87,9 @@ static bool st_camera(Parser *p)
   if (glms_vec3_eqv(eye, center))
     return lexer_fail(&p->lx, col, "expected eye and center at different points, "
                       "found both at (%g %g %g)", eye.x, eye.y, eye.z);
-  if (f[2].set && !bounds_direction(&p->lx, &f[2], "up vector"))
+  if (f[2].set && !limits_direction(&p->lx, &f[2], "up vector"))
     return false;
-  if (!(bounds_sin_angle(up, glms_vec3_sub(center, eye)) > 1e-6))
+  if (!(limits_sin_angle(up, glms_vec3_sub(center, eye)) > 1e-6))
     return lexer_fail(&p->lx, f[2].set ? f[2].val_col : col, "expected an up vector "
                       "not parallel to the view direction, found up (%g %g %g)",
                       up.x, up.y, up.z);
@@ -250,7 +250,7 @@ static bool st_sphere(Parser *p)
   static const Key keys[] = {{"center", KEY_POINT, true}, {"radius", KEY_NUM, true},
                              {"material", KEY_NAME, true}};
   Field f[3];
-  if (!fields_read(&p->lx, "sphere", keys, 3, f) || !bounds_length(&p->lx, &f[1], "radius"))
+  if (!fields_read(&p->lx, "sphere", keys, 3, f) || !limits_length(&p->lx, &f[1], "radius"))
     return false;
   Instance inst = {.shape = SHAPE_SPHERE, .sphere = {.center = f[0].v, .radius = f[1].v.x}};
   return add_shape(p, &inst, &p->lx.tok[f[2].val]);
@@ -261,7 +261,7 @@ static bool st_plane(Parser *p)
   static const Key keys[] = {{"point", KEY_POINT, true}, {"normal", KEY_VEC, true},
                              {"material", KEY_NAME, true}};
   Field f[3];
-  if (!fields_read(&p->lx, "plane", keys, 3, f) || !bounds_direction(&p->lx, &f[1], "normal"))
+  if (!fields_read(&p->lx, "plane", keys, 3, f) || !limits_direction(&p->lx, &f[1], "normal"))
     return false;
   Plane plane = plane_make(f[0].v, f[1].v);
   Instance inst = {.shape = SHAPE_PLANE, .plane = scene_add_plane(p->scene, &plane)};
@@ -369,7 +369,7 @@ static int recent_find(const Parser *p, const uint64_t w[2], int len)
  * statement) then reads it and says what is wrong. What this accepts the
  * general path accepts, with the same floats (number_prefix stops where the
  * lexer's word ends, at the space, and reads it as number_parse does) and
- * the same checks (bounds_coordinate_ok, bounds_length_ok,
+ * the same checks (fields_coordinate_ok, limits_length_ok,
  * lexer_name_valid, which a name among the last RECENT_NAMES found has
  * passed already: recent_find); tests/test_parse_pieces.c compares the two
  * on altered sphere lines and on texts of many lines and names. The 10^6-sphere scene's one-thread parse: docs/reliability.md,
@@ -383,10 +383,10 @@ static int sphere_line(Parser *p)
     return 0;
   s += 14;
   for (int k = 0; k < 3; k++)
-    if (!(s = number_then_space(s, end, &v[k])) || !bounds_coordinate_ok(v[k]))
+    if (!(s = number_then_space(s, end, &v[k])) || !fields_coordinate_ok(v[k]))
       return 0;
   if (!word_then_space(s, end, "radius", 6) || !(s = number_then_space(s + 7, end, &v[3])) ||
-      !bounds_length_ok(v[3]) || !word_then_space(s, end, "material", 8))
+      !limits_length_ok(v[3]) || !word_then_space(s, end, "material", 8))
     return 0;
   s += 9;
   const char *name = s;

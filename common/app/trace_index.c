@@ -1,23 +1,34 @@
-/* The recording index of --trace and --aov (common/app/trace_state.h): a
+/* The recording index of --trace and --aov (common/app/trace_index.h): a
  * copy of the scene whose SceneIndex records each query (camera rays, shadow
  * rays, their answers) and answers it with the scene's own index, and the
  * copies of the scene whose materials keep one term. README.md, "For
  * students"; docs/tracing.md. */
-#include "app/trace_state.h"
+#include "app/trace_index.h"
 
 #include <stdlib.h>
 #include <string.h>
 
+/* The shape's name in a trace: its statement's first word (a switch, so
+ * that a ShapeType without a case here fails to compile: -Wswitch). */
+static const char *shape_name(ShapeType shape)
+{
+  switch (shape) {
+  case SHAPE_SPHERE: return "sphere";
+  case SHAPE_PLANE: return "plane";
+  case SHAPE_QUAD: return "quad";
+  }
+  return "?";
+}
+
 /* "#2 sphere red", "#5 sphere light 0": what an instance is. */
 static void label(const Scene *scene, const Instance *inst, char *buf, size_t size)
 {
-  static const char *const shape[] = {"sphere", "plane", "quad"};
   int id = (int)(inst - scene->instances);
   if (inst->material >= 0)
-    snprintf(buf, size, "#%d %s %s", id, shape[inst->shape],
+    snprintf(buf, size, "#%d %s %s", id, shape_name(inst->shape),
              scene->materials[inst->material].name);
   else
-    snprintf(buf, size, "#%d %s light %d", id, shape[inst->shape], inst->light);
+    snprintf(buf, size, "#%d %s light %d", id, shape_name(inst->shape), inst->light);
 }
 
 /* The nearest of the first `count` instances on the ray before *tmax (*tmax
@@ -125,7 +136,7 @@ static const Instance *traced_closest(const Scene *scene, const Ray *ray, float 
     trace_flush_rays(t, 1);
     camera_query(t, r, hit, hit ? *tmax : INFINITY);
   } else if (!hit) {
-    aov_camera_hit(t, NULL);
+    trace_sum_hit(t, NULL);
   }
   return hit;
 }

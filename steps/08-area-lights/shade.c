@@ -67,8 +67,7 @@ static SamplerPattern light_pattern(const RenderCtx *ctx, int light, int n)
 {
   Rng r = rng_make(ctx->set->seed ^ (0x9e3779b9u * (uint32_t)(light + 1)), ctx->pixel,
                    ctx->sample);
-  return sampler_pattern((SamplerKind)ctx->set->sampler, rng_next(&r), ctx->pixel,
-                         (uint32_t)n);
+  return sampler_pattern(ctx->set->sampler, rng_next(&r), ctx->pixel, (uint32_t)n);
 }
 
 /* The light's point (a, b) as a point light of power (P/n) cos(theta_light):
@@ -124,7 +123,7 @@ static vec3s shade_light(const Scene *scene, int k, const Hit *hit, vec3s v, Ren
      * "nothing" without a ray when none can. There, with the grid, a quarter
      * of its samples suffice: without a shadow edge the light's term is
      * smooth, and the grid's error on it small. */
-    int n = ctx->set->light_samples;
+    int n = scene->light_samples;
     if (n <= SHADOW_VOLUME_MIN_SAMPLES)
       return shade_area(scene, k, hit, v, n, ctx);
     AccelShadowView storage;
