@@ -46,7 +46,7 @@ OPT     ?= -O3 -march=native -flto=auto -ffat-lto-objects
 CFLAGS  := -std=c11 $(OPT) -g -fopenmp -ffp-contract=off -fno-math-errno \
            -D_POSIX_C_SOURCE=200809L \
            -Wall -Wextra -Wpedantic -Wshadow -Wstrict-prototypes \
-           -Wmissing-prototypes -Werror -MMD -MP -Icommon
+           -Wmissing-prototypes -Werror -MMD -MP -Icommon -Ifast
 # TRACE_OFF=1: the trace hooks compiled out (make bench's comparison build;
 # --trace and --aov then record nothing).
 CFLAGS  += $(if $(TRACE_OFF),-DTRACE_COMPILED_OUT)
@@ -101,7 +101,13 @@ bench-deps:
 	@$(call need_debs,$(DEB_BENCH))
 
 # ---------------------------------------------------------------- common library
-COMMON_SRC := $(wildcard common/*.c common/*/*.c)
+# The speed pack (fast/) is archived with the core; FAST=0 links the plain
+# answers of common/app/no_pack.c in place of fast/pack.c, so that no step
+# binary takes any of it (same pictures: docs/performance.md).
+FAST ?= 1
+PACK_SRC   := $(if $(filter 0,$(FAST)),common/app/no_pack.c,fast/pack.c)
+COMMON_SRC := $(filter-out common/app/no_pack.c,$(wildcard common/*.c common/*/*.c)) \
+              $(wildcard fast/*/*.c) $(PACK_SRC)
 COMMON_OBJ := $(COMMON_SRC:%.c=$(BUILD)/obj/%.o)
 LIBCOMMON  := $(BUILD)/libcommon.a
 

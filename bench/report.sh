@@ -255,7 +255,7 @@ $(table "$D/scaling.csv")
 ### Plain loop, one leaf or BVH (RT_ACCEL=loop|flat|bvh)
 
 Trace time (s, median of 3) of step 05 by layout; the default is one leaf up
-to 16 spheres and the BVH above (common/accel/accel.h, ACCEL_FLAT_MAX).
+to 16 spheres and the BVH above (fast/index/accel.h, ACCEL_FLAT_MAX).
 
 $(table "$D/layout.csv")
 EOF

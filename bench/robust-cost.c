@@ -9,7 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "accel/accel.h"
+#include "index/accel.h"
 #include "app/image.h"
 #include "app/parser.h"
 #include "app/render.h"

@@ -19,8 +19,6 @@ void scene_init(Scene *scene)
               vec_make(0.0f, 1.0f, 0.0f), 45.0f, 1.0f, 800.0f / 600.0f);
 }
 
-_Static_assert(sizeof(Instance) == 32, "an instance is half a cache line");
-
 void scene_free(Scene *scene)
 {
   free(scene->materials);
@@ -38,16 +36,6 @@ void scene_free(Scene *scene)
 static bool reserve(void **array, int count, int more, size_t size)
 {
   if (grow_reserve(array, (size_t)count, (size_t)more, size))
-    return true;
-  fprintf(stderr, "scene: out of memory\n");
-  return false;
-}
-
-/* Room for `more` instances after the scene's, the array kept aligned. */
-static bool reserve_instances(Scene *scene, int more)
-{
-  if (grow_reserve_aligned((void **)&scene->instances, (size_t)scene->n_instances, (size_t)more,
-                           sizeof(Instance), INSTANCE_ALIGN))
     return true;
   fprintf(stderr, "scene: out of memory\n");
   return false;
@@ -91,7 +79,7 @@ const Plane *scene_add_plane(Scene *scene, const Plane *plane)
 
 bool scene_add_instance(Scene *scene, const Instance *inst)
 {
-  if (!reserve_instances(scene, 1))
+  if (!reserve((void **)&scene->instances, scene->n_instances, 1, sizeof(Instance)))
     return false;
   scene->instances[scene->n_instances++] = *inst;
   if (inst->material >= 0)
@@ -144,7 +132,7 @@ static bool add_light_shapes(Scene *scene, unsigned features)
     } else {
       continue;
     }
-    if (!reserve_instances(scene, 1))
+    if (!reserve((void **)&scene->instances, scene->n_instances, 1, sizeof(Instance)))
       return false;
     scene->instances[scene->n_instances++] = inst;
   }

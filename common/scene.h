@@ -15,10 +15,9 @@
 
 typedef enum ShapeType { SHAPE_SPHERE, SHAPE_PLANE, SHAPE_QUAD } ShapeType;
 
-/* 32 bytes, two to a cache line (the scene's array of them is aligned to
- * 64): a sphere is kept in place, the larger shapes where the scene keeps
- * them (a 10^6-sphere scene's instances take 32 MB instead of 64;
- * docs/reliability.md, "Twelfth pass"). */
+/* A shape paired with a material or a light. A sphere is kept in place; a
+ * plane or a quad, larger, where the scene keeps it, so that every instance
+ * stays as small as a sphere's. */
 typedef struct Instance {
   ShapeType shape;
   int material;         /* index into Scene.materials, or -1 for a light's shape */
@@ -29,8 +28,6 @@ typedef struct Instance {
     const Quad *quad;   /* SHAPE_QUAD: its area light's, Scene.lights[light].quad */
   };
 } Instance;
-
-enum { INSTANCE_ALIGN = 64 }; /* Scene.instances' alignment in bytes */
 
 /* What a step knows how to render; the rest of a scene is ignored (and said). */
 enum SceneFeature {
@@ -50,8 +47,8 @@ typedef struct SceneInfo {
 
 struct Scene;
 
-/* An acceleration structure over the instances (common/accel/ builds one).
- * It only chooses which instances a query tests; every test calls the
+/* An acceleration structure over the instances (pack_index, app/pack.h,
+ * builds one). It only chooses which instances a query tests; every test calls the
  * shape's own function (scene_instance_hit_t), so its answers are the plain
  * loop's: the closest hit keeps the first of equal distances in instance
  * order, as the loop does. */
@@ -79,8 +76,7 @@ typedef struct Scene {
   int n_lights;
   Plane **planes;          /* the planes instances point to, each owned */
   int n_planes;
-  Instance *instances;     /* lit shapes first, then the lights' shapes;
-                            * INSTANCE_ALIGN-byte aligned */
+  Instance *instances;     /* lit shapes first, then the lights' shapes */
   int n_instances;         /* all instances the camera sees */
   int n_shapes;            /* instances [0, n_shapes) have a material */
   SceneInfo info;          /* set by scene_prepare */
@@ -131,7 +127,7 @@ bool scene_occluded(const Scene *scene, Ray r, float tmax);
 
 /* A copy of `scene` whose any-hit queries answer false (no_occluders set):
  * what a shading point sees when the renderer has proved that nothing lies
- * between it and a light (accel_shadow_view, common/accel/accel.h). */
+ * between it and a light (pack_light_view, app/pack.h). */
 Scene scene_view_unoccluded(const Scene *scene);
 
 /* The index of the material called `name`, or -1. */

@@ -11,7 +11,8 @@
 #include <stdlib.h>
 #include <sys/stat.h>
 
-#include "accel/accel.h"
+#include "index/accel.h"
+#include "index/light_view.h"
 #include "app/image.h"
 #include "app/parser.h"
 #include "rng.h"
@@ -324,14 +325,14 @@ static bool random_shadow_ray(const Hit *h, const Quad *q, Rng *r, Ray *ray, flo
 Test(area_light, shadow_views_answer_every_shadow_ray_as_the_scene_does)
 {
   /* Random spheres over the floor; shading points on the floor and on the
-   * spheres. accel_shadow_view gives a view whose shadow queries test only
+   * spheres. light_view_make gives a view whose shadow queries test only
    * the shapes that may stand in the way (none: no ray at all). For 64
    * random shadow rays per point, scene_occluded on the view must answer as
    * on the whole scene (the ray code itself). Each kind of view must occur
    * often enough to matter. */
   Rng r = rng_make(7, 0, 0);
   int counts[3] = {0, 0, 0}; /* views with no shape, some shapes, the whole scene */
-  Check k = CHECK("accel_shadow_view, accel_quad_unoccluded", DOC_SKIP);
+  Check k = CHECK("light_view_make, accel_quad_unoccluded", DOC_SKIP);
   for (int scene_k = 0; scene_k < 20; scene_k++) {
     char text[1024];
     int len = snprintf(text, sizeof text,
@@ -353,9 +354,9 @@ Test(area_light, shadow_views_answer_every_shadow_ray_as_the_scene_does)
                                                    rng_float(&r) - 0.5f))};
       if (!scene_intersect(&s, cam, INFINITY, &h) || h.inst->light >= 0)
         continue;
-      AccelShadowView storage;
-      Scene view;
-      int n = accel_shadow_view(&s, &h, q, &storage, &view);
+      PackView pv;
+      int n = light_view_make(&s, &h, q, &pv);
+      const Scene *view = &pv.scene;
       counts[n == 0 ? 0 : n > 0 ? 1 : 2]++;
       CHECK_INT(&k, n == 0, accel_quad_unoccluded(&s, &h, q), "random scene %d, point (%g, %g, "
                 "%g): accel_quad_unoccluded against a view with no shape", scene_k, h.p.x,
@@ -365,7 +366,7 @@ Test(area_light, shadow_views_answer_every_shadow_ray_as_the_scene_does)
         Ray ray;
         float tmax;
         if (random_shadow_ray(&h, q, &r, &ray, &tmax))
-          differ += scene_occluded(&view, ray, tmax) != scene_occluded(&s, ray, tmax);
+          differ += scene_occluded(view, ray, tmax) != scene_occluded(&s, ray, tmax);
       }
       CHECK_INT(&k, 0, differ, "random scene %d, point (%g, %g, %g), a view testing %d shapes: "
                 "shadow rays of 64 answered otherwise than on the scene", scene_k, h.p.x, h.p.y,

@@ -1,4 +1,4 @@
-/* Fresh memory mapped ahead of the writes (common/pages.h): after
+/* Fresh memory mapped ahead of the writes (fast/pages/pages.h): after
  * pages_populate the whole pages of the range are resident (mincore) and
  * what they held is kept; pages outside it stay unmapped. A file's pages
  * entered in the page table and taken out again by the threads (present
@@ -14,7 +14,7 @@
 #include <sys/mman.h>
 #include <unistd.h>
 
-#include "pages.h"
+#include "pages/pages.h"
 
 #define DOC "docs/reliability.md, \"Eighth pass\""
 

@@ -1,4 +1,4 @@
-/* The parse of a large scene in pieces at once (common/app/parser_load.c)
+/* The parse of a large scene in pieces at once (fast/reader/pieces.c)
  * against the one-piece parse: the same scene, or the same message, for
  * every scene file of the repository. docs/reliability.md, "Large scenes". */
 #define _DEFAULT_SOURCE /* mkstemp */
@@ -12,6 +12,7 @@
 
 #include "app/parser.h"
 #include "app/parser_state.h"
+#include "reader/pieces.h"
 
 /* Two instances with the same shape, compared by the union member it uses
  * (the rest of the union's bytes are unspecified after a member's store). */
@@ -59,7 +60,7 @@ static bool same_parse(bool ok_a, const char *err_a, const Scene *a, bool ok_b,
   return ok_a == ok_b && strcmp(err_a, err_b) == 0 && (!ok_a || same_scene(a, b));
 }
 
-/* What parser_load_chunks prints and builds for `text` in `chunks` pieces. */
+/* What pieces_load prints and builds for `text` in `chunks` pieces. */
 static bool parse_in_pieces(const char *text, size_t len, int chunks, Scene *s, char *err,
                             size_t size)
 {
@@ -67,7 +68,7 @@ static bool parse_in_pieces(const char *text, size_t len, int chunks, Scene *s, 
   cr_assert(tmp);
   capture_begin(tmp);
   scene_init(s);
-  bool ok = parser_load_chunks("t.scene", text, len, s, chunks);
+  bool ok = pieces_load("t.scene", text, len, s, chunks);
   capture_end();
   rewind(tmp);
   err[fread(err, 1, size - 1, tmp)] = '\0';
@@ -82,7 +83,7 @@ static bool parse_in_pieces(const char *text, size_t len, int chunks, Scene *s, 
 Test(parse_pieces, pieces_in_parallel_parse_as_the_whole)
 {
   static const char *const dirs[] = {"scenes", "tests/bad/scenes"};
-  Check c = CHECK("parser_load_chunks", "docs/reliability.md, \"Large scenes\"");
+  Check c = CHECK("pieces_load", "docs/reliability.md, \"Large scenes\"");
   for (int d = 0; d < 2; d++) {
     DIR *dir = opendir(dirs[d]);
     cr_assert(dir, "no %s", dirs[d]);
@@ -99,15 +100,15 @@ Test(parse_pieces, pieces_in_parallel_parse_as_the_whole)
       Scene whole, pieces;
       bool ok = parse_in_pieces(text, len, 1, &whole, whole_err, sizeof whole_err);
       for (int chunks = 2; chunks <= 9; chunks++) {
-        int reparses = parser_reparses;
+        int reparses = pieces_reparses;
         bool ok_p = parse_in_pieces(text, len, chunks, &pieces, piece_err, sizeof piece_err);
         CHECK_THAT(&c, same_parse(ok, whole_err, &whole, ok_p, piece_err, &pieces),
                    "%.100s in %d pieces: expected %s%.200s, got %s%.200s", path, chunks,
                    ok ? "the whole parse's scene" : "the whole parse's error: ", whole_err,
                    ok_p ? (ok ? "a different scene" : "a scene") : "", piece_err);
-        CHECK_THAT(&c, !ok || parser_reparses == reparses,
+        CHECK_THAT(&c, !ok || pieces_reparses == reparses,
                    "%.100s in %d pieces: a valid scene, expected the pieces to parse it "
-                   "(parser_reparses unchanged), got it parsed again whole", path, chunks);
+                   "(pieces_reparses unchanged), got it parsed again whole", path, chunks);
         scene_free(&pieces);
       }
       scene_free(&whole);
@@ -148,13 +149,13 @@ static void forward_references(Check *c, bool undefined)
                "forward references, whole: shape %d: expected material %d, got %d", k, k % 7,
                whole.instances[k].material);
   for (int chunks = 2; chunks <= 9; chunks++) {
-    int reparses = parser_reparses;
+    int reparses = pieces_reparses;
     bool ok_p = parse_in_pieces(text, len, chunks, &pieces, piece_err, sizeof piece_err);
     CHECK_THAT(c, same_parse(ok, whole_err, &whole, ok_p, piece_err, &pieces),
                "forward references in %d pieces: expected %s%.200s, got %s%.200s", chunks,
                ok ? "the whole parse's scene" : "the whole parse's error: ", whole_err,
                ok_p ? (ok ? "a different scene" : "a scene") : "", piece_err);
-    CHECK_THAT(c, !ok || parser_reparses == reparses,
+    CHECK_THAT(c, !ok || pieces_reparses == reparses,
                "forward references in %d pieces: a valid scene, expected the pieces to "
                "parse it, got it parsed again whole", chunks);
     if (ok_p)
@@ -166,7 +167,7 @@ static void forward_references(Check *c, bool undefined)
 
 Test(parse_pieces, forward_references_resolve_as_in_the_whole)
 {
-  Check c = CHECK("parser_load_chunks", "docs/reliability.md, \"Second pass\"");
+  Check c = CHECK("pieces_load", "docs/reliability.md, \"Second pass\"");
   forward_references(&c, false);
   forward_references(&c, true);
   CHECK_DONE(&c);
@@ -178,7 +179,7 @@ Test(parse_pieces, forward_references_resolve_as_in_the_whole)
  * parses in 2 to 9 pieces as whole, and never again whole. */
 Test(parse_pieces, shapes_fit_their_pieces_room)
 {
-  Check c = CHECK("parser_load_chunks", "docs/reliability.md, \"Fifth pass\"");
+  Check c = CHECK("pieces_load", "docs/reliability.md, \"Fifth pass\"");
   static char text[1 << 16];
   size_t len = (size_t)snprintf(text, sizeof text, "material m diffuse 1 1 1\n");
   for (int k = 0; k < 400; k++)
@@ -188,13 +189,13 @@ Test(parse_pieces, shapes_fit_their_pieces_room)
   Scene whole, pieces;
   cr_assert(parse_in_pieces(text, len, 1, &whole, whole_err, sizeof whole_err), "%s", whole_err);
   for (int chunks = 2; chunks <= 9; chunks++) {
-    int reparses = parser_reparses;
+    int reparses = pieces_reparses;
     bool ok_p = parse_in_pieces(text, len, chunks, &pieces, piece_err, sizeof piece_err);
-    CHECK_THAT(&c, ok_p && same_scene(&whole, &pieces) && parser_reparses == reparses,
+    CHECK_THAT(&c, ok_p && same_scene(&whole, &pieces) && pieces_reparses == reparses,
                "400 shapes, the last line without a newline, in %d pieces: expected the "
                "whole parse's scene from the pieces, got %s%s", chunks,
                !ok_p ? "an error" : same_scene(&whole, &pieces) ? "it" : "another scene",
-               parser_reparses == reparses ? "" : " only from parsing again whole");
+               pieces_reparses == reparses ? "" : " only from parsing again whole");
     if (ok_p)
       scene_free(&pieces);
   }
@@ -232,17 +233,17 @@ static void header_and_spheres(Check *c, bool own_materials)
   Scene whole, pieces;
   cr_assert(parse_in_pieces(text, len, 1, &whole, whole_err, sizeof whole_err), "%s", whole_err);
   for (int chunks = 2; chunks <= 9; chunks++) {
-    int reparses = parser_reparses, pending = parser_pieces_pending;
+    int reparses = pieces_reparses, pending = pieces_pending;
     bool ok_p = parse_in_pieces(text, len, chunks, &pieces, piece_err, sizeof piece_err);
-    CHECK_THAT(c, ok_p && same_scene(&whole, &pieces) && parser_reparses == reparses,
+    CHECK_THAT(c, ok_p && same_scene(&whole, &pieces) && pieces_reparses == reparses,
                "a header and 3000 spheres%s, in %d pieces: expected the whole parse's scene "
                "from the pieces, got %s%s", own_materials ? " (pieces define materials)" : "",
                chunks, !ok_p ? "an error" : same_scene(&whole, &pieces) ? "it" : "another scene",
-               parser_reparses == reparses ? "" : " only from parsing again whole");
-    CHECK_THAT(c, own_materials || parser_pieces_pending == pending,
+               pieces_reparses == reparses ? "" : " only from parsing again whole");
+    CHECK_THAT(c, own_materials || pieces_pending == pending,
                "3000 spheres naming the header's materials, in %d pieces: expected 0 "
                "references left pending by the pieces (each given the header's materials), "
-               "got %d", chunks, parser_pieces_pending - pending);
+               "got %d", chunks, pieces_pending - pending);
     if (ok_p)
       scene_free(&pieces);
   }
@@ -251,7 +252,7 @@ static void header_and_spheres(Check *c, bool own_materials)
 
 Test(parse_pieces, header_materials_reach_every_piece)
 {
-  Check c = CHECK("parser_load_chunks", "docs/reliability.md, \"Sixth pass\"");
+  Check c = CHECK("pieces_load", "docs/reliability.md, \"Sixth pass\"");
   header_and_spheres(&c, false);
   header_and_spheres(&c, true);
   CHECK_DONE(&c);

@@ -9,7 +9,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "accel/accel.h"
+#include "index/accel.h"
 #include "app/app.h"
 #include "app/image.h"
 #include "app/parser.h"

@@ -6,7 +6,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "accel/accel.h"
+#include "app/pack.h"
 #include "app/aov.h"
 #include "app/cli.h"
 #include "app/image.h"
@@ -184,7 +184,7 @@ int app_run(int argc, char **argv, const Step *step)
     return 2;
   }
   say_ignored(step, &o, 0);
-  if (!scene_prepare(&scene, step->features) || !accel_build(&scene)) {
+  if (!scene_prepare(&scene, step->features) || !pack_index(&scene)) {
     scene_free(&scene);
     return 1;
   }

@@ -19,7 +19,7 @@ NumberStatus number_parse(const char *s, int len, float *out);
  * it without strtof: returns where it stops (the first byte that does not
  * continue it), with *out the float number_parse gives for the bytes before
  * that; NULL otherwise (no decimal there, or one number_parse hands to
- * strtof). For the parser's fast path (common/app/parser.c, sphere_line). */
+ * strtof). For the parser's fast path (common/app/parser_state.c, sphere_line). */
 const char *number_prefix(const char *s, const char *end, float *out);
 
 #endif

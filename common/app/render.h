@@ -40,7 +40,6 @@ typedef struct RenderCtx {
                             * render; NULL until the first call) */
   uint32_t tile;      /* tiles this thread has started: render_point's memo
                        * keeps the colours of the current one only */
-  char pad[12];       /* keep threads' counters on separate cache lines */
 } RenderCtx;
 
 /* A step's per-pixel work: the colour of pixel (i, j) (i from the left, j from

@@ -1,23 +1,21 @@
-/* Whole scene texts (step 02): a file read whole, then parsed; a large text
- * in pieces at once, four per thread taken in turn, each writing its shapes
- * at its place in one array, merged in file order (a scene of 10^6 spheres
- * is 74 MB). The lines before the first sphere line, when they are short,
- * are parsed first and their materials given to every piece. Errors are
- * always reported by the one-piece parse, so they read the same.
- * docs/scene-format.md; docs/reliability.md. */
+/* A large scene text parsed in pieces at once, four per thread taken in
+ * turn, each writing its shapes at its place in one array, merged in file
+ * order. The lines before the first sphere line, when they are short, are
+ * parsed first and their materials given to every piece. Errors are always
+ * reported by the one-piece parse (parser_load_whole), so they read the
+ * same. docs/scene-format.md. */
 #define _GNU_SOURCE /* memmem */
-#include "app/parser.h"
-#include "app/parser_state.h"
+#include "reader/pieces.h"
 
-#include <errno.h>
 #include <omp.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "app/textfile.h"
+#include "app/parser.h"
+#include "app/parser_state.h"
 #include "grow.h"
-#include "pages.h"
+#include "pages/pages.h"
 
 enum {
   PIECE_MIN = 1 << 21, /* bytes: smaller texts are parsed in one piece */
@@ -25,26 +23,12 @@ enum {
   PIECES_PER_THREAD = 4, /* taken in turn: a slow core holds up less */
 };
 
-static bool parse_whole(const char *file, const char *text, size_t len, Scene *scene)
-{
-  Parser p;
-  parser_begin(&p, file, text, len, scene);
-  lexer_skip_bom(&p.lx);
-  bool ok = parser_statements(&p) && parser_resolve(&p);
-  parser_end(&p);
-  if (!ok)
-    scene_free(scene);
-  return ok;
-}
-
 /* Piece boundaries in text[from .. len), each just after a '\n':
  * start[0 .. n], start[0] = from, start[n] = len. The pieces shrink as the
  * parse goes on (piece k of `want` about (2 (want - k) - 1) / want^2 of the
  * text), so that the threads, taking them in turn, finish close together: a
  * thread the machine slows down holds the others up by at most one small
- * piece. With pieces of one size, one thread of two waited a median 7.7 ms
- * (up to 18.6 ms) for the other at the end of the 10^6-sphere parse, now
- * 2.2 ms (up to 6.5 ms; docs/reliability.md, "Thirteenth pass"). */
+ * piece. */
 static int cut_pieces(const char *text, size_t from, size_t len, int want, size_t *start)
 {
   int n = 1;
@@ -70,9 +54,7 @@ typedef struct Piece {
 /* The header: the lines before the first that starts with a sphere, when it
  * starts within the first `limit` bytes; 0 otherwise. Parsed alone first, it
  * gives its materials to every piece, which then finds the materials the
- * spheres name instead of keeping each reference to resolve later (10^6
- * spheres: 500 000 references, 8 MB, in the second of two pieces;
- * docs/reliability.md, "Sixth pass"). */
+ * spheres name instead of keeping each reference to resolve later. */
 static size_t header_length(const char *text, size_t len, size_t limit)
 {
   static const char word[] = "\nsphere ";
@@ -184,8 +166,7 @@ static bool merge(Piece *to, Piece *q, int known)
 
 /* Lines in text[0 .. len): its newlines, plus one for a last line without
  * one. Counted 255 bytes at a time in one byte, which the compiler turns
- * into vector compares (12 GB/s here, a third of the time of a count in
- * size_t). */
+ * into vector compares. */
 static int count_lines(const char *text, size_t len)
 {
   size_t n = 0;
@@ -199,8 +180,8 @@ static int count_lines(const char *text, size_t len)
   return (int)n + (len > 0 && text[len - 1] != '\n');
 }
 
-int parser_reparses = 0;
-int parser_pieces_pending = 0;
+int pieces_reparses = 0;
+int pieces_pending = 0;
 
 /* Piece k of the text, starting at its place `shapes` in the shared array,
  * with room for `room` shapes. */
@@ -216,11 +197,11 @@ static void piece_begin(Piece *pc, const char *file, const char *text, size_t le
     lexer_skip_bom(&pc->p.lx);
 }
 
-bool parser_load_chunks(const char *file, const char *text, size_t len, Scene *scene,
+bool pieces_load(const char *file, const char *text, size_t len, Scene *scene,
                         int chunks)
 {
   if (chunks < 2)
-    return parse_whole(file, text, len, scene);
+    return parser_load_whole(file, text, len, scene);
   int want = chunks < PIECES_MAX ? chunks : PIECES_MAX;
   /* A header of at most a sixteenth of a piece's mean share (parsed alone,
    * while the other threads wait) becomes piece 0: h = 1. */
@@ -233,12 +214,12 @@ bool parser_load_chunks(const char *file, const char *text, size_t len, Scene *s
   Piece *piece = aligned_alloc(_Alignof(Piece), (size_t)n * sizeof *piece);
   if (n - h < 2 || !piece) {
     free(piece);
-    return parse_whole(file, text, len, scene);
+    return parser_load_whole(file, text, len, scene);
   }
   /* One array for every piece's shapes, room for one a line (a statement
    * is a line): piece k parses into it from first[k], so merging moves each
    * piece down over the few lines that were not shapes instead of copying
-   * it into new memory (docs/reliability.md, "Fifth pass"). The header is
+   * it into new memory. The header is
    * parsed first, into an array of its own, and takes the room of its
    * shapes only: the pieces after a header and before any other line that
    * is not a shape stay where they are. The array's room is the growing
@@ -257,8 +238,7 @@ bool parser_load_chunks(const char *file, const char *text, size_t len, Scene *s
   first[0] = 0;
   for (int k = 0; k < n; k++)
     first[k + 1] += first[k];
-  Instance *shapes = ok ? aligned_alloc(INSTANCE_ALIGN, grow_capacity((size_t)first[n]) *
-                                                          sizeof *shapes)
+  Instance *shapes = ok ? malloc(grow_capacity((size_t)first[n]) * sizeof *shapes)
                         : NULL;
   if (!shapes) {
     if (h) {
@@ -268,9 +248,9 @@ bool parser_load_chunks(const char *file, const char *text, size_t len, Scene *s
     free(piece);
     if (!ok) {
 #pragma omp atomic
-      parser_reparses++;
+      pieces_reparses++;
     }
-    return parse_whole(file, text, len, scene);
+    return parser_load_whole(file, text, len, scene);
   }
   if (h) { /* the header's shapes to the front of the shared array */
     if (first[1] > 0)
@@ -287,7 +267,7 @@ bool parser_load_chunks(const char *file, const char *text, size_t len, Scene *s
     piece[k].ok = (!h || preload_materials(&piece[k], &piece[0])) &&
                   parser_statements(&piece[k].p);
 #pragma omp atomic
-    parser_pieces_pending += piece[k].p.n_pending;
+    pieces_pending += piece[k].p.n_pending;
   }
   for (int k = 0; k < n; k++)
     ok = ok && piece[k].ok && (k == 0 || merge(&piece[0], &piece[k], known));
@@ -307,44 +287,16 @@ bool parser_load_chunks(const char *file, const char *text, size_t len, Scene *s
   if (ok)
     return true;
 #pragma omp atomic
-  parser_reparses++;
-  return parse_whole(file, text, len, scene);
+  pieces_reparses++;
+  return parser_load_whole(file, text, len, scene);
 }
 
-bool parser_load_text(const char *file, const char *text, size_t len, Scene *scene)
+bool pieces_parse(const char *file, const char *text, size_t len, Scene *scene, bool *ok)
 {
-  if (len > PARSER_MAX_BYTES) {
-    fprintf(stderr, "%s: expected at most %zu bytes, found %zu\n", file,
-            PARSER_MAX_BYTES, len);
-    scene_free(scene);
-    return false;
-  }
   size_t pieces = len / PIECE_MIN, threads = (size_t)omp_get_max_threads();
   if (pieces < 2 || threads < 2)
-    return parse_whole(file, text, len, scene);
-  size_t want = PIECES_PER_THREAD * threads;
-  return parser_load_chunks(file, text, len, scene, (int)(pieces < want ? pieces : want));
-}
-
-bool parser_load_string(const char *file, const char *text, Scene *scene)
-{
-  return parser_load_text(file, text, strlen(text), scene);
-}
-
-bool parser_load_file(const char *path, Scene *scene)
-{
-  TextFile f;
-  int err = textfile_read(path, PARSER_MAX_BYTES, &f);
-  if (err == EFBIG)
-    fprintf(stderr, "parser: cannot read '%s': larger than %zu bytes, the limit of a "
-            "scene file\n", path, PARSER_MAX_BYTES);
-  else if (err)
-    fprintf(stderr, "parser: cannot read '%s': %s\n", path, strerror(err));
-  if (err) {
-    scene_free(scene);
     return false;
-  }
-  bool ok = parser_load_text(path, f.text, f.len, scene);
-  textfile_free(&f);
-  return ok;
+  size_t want = PIECES_PER_THREAD * threads;
+  *ok = pieces_load(file, text, len, scene, (int)(pieces < want ? pieces : want));
+  return true;
 }

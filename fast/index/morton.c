@@ -1,6 +1,6 @@
-/* Morton order of ball centres (common/accel/bvh.c's clusters): codes on a
+/* Morton order of ball centres (fast/index/bvh.c's clusters): codes on a
  * cubic grid, a radix sort, runs of neighbours. docs/performance.md. */
-#include "accel/morton.h"
+#include "index/morton.h"
 
 #include <omp.h>
 #include <stdlib.h>
@@ -21,7 +21,7 @@ static uint32_t spread3(uint32_t x)
  * over the centres' bounds (a flat scene is not cut along its thin axis). */
 static void morton_codes(Balls items, int n, uint64_t *pair)
 {
-  Box cb = sah_box_empty();
+  Box cb = box_empty();
   float lo0 = cb.lo[0], lo1 = cb.lo[1], lo2 = cb.lo[2];
   float hi0 = cb.hi[0], hi1 = cb.hi[1], hi2 = cb.hi[2];
 #pragma omp parallel for schedule(static) if (n > 65536) \

@@ -1,12 +1,12 @@
 /* Acceleration structure (docs/performance.md): the lit spheres under a
- * bounding volume hierarchy (common/accel/bvh.c), everything else in a list;
+ * bounding volume hierarchy (fast/index/bvh.c), everything else in a list;
  * in scenes of at most 16 spheres, their cones seen from the eye and the
- * lights (common/accel/cones.c) for the rays those know. The boxes and cones
+ * lights (fast/index/cones.c) for the rays those know. The boxes and cones
  * only choose which instances a ray meets; each one met is tested with
  * scene_instance_hit_t, the shape's own function (the hierarchy's spheres
  * with sphere_hit_t, what it calls for them), so the answers are those of
  * scene.c's plain loop. */
-#include "accel/accel.h"
+#include "index/accel.h"
 
 #include <limits.h>
 #include <math.h>
@@ -16,10 +16,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "accel/bvh.h"
-#include "accel/cones.h"
-#include "accel/hull.h"
-#include "pages.h"
+#include "index/bvh.h"
+#include "index/cones.h"
+#include "index/hull.h"
+#include "pages/pages.h"
 
 enum {
   STACK = 64,  /* traversal stack: the tree is at most about 60 levels deep */
@@ -34,7 +34,7 @@ typedef struct Accel {
   int *others;      /* instance indices of everything else, lit ones first */
   int n_others, n_others_lit;
   Cones *cones;     /* small scenes: the spheres' cones seen from the eye and
-                     * the lights (accel/cones.c), or NULL */
+                     * the lights (index/cones.c), or NULL */
 } Accel;
 
 /* The closest hit so far: distance and instance index (INT_MAX: none). */
@@ -243,7 +243,7 @@ static int layout_wanted(void)
        : strcmp(env, "bvh") == 0  ? 2 : -1;
 }
 
-/* A sphere as the build reads it (accel/bvh.h). */
+/* A sphere as the build reads it (index/box.h). */
 static Ball sphere_ball(const Sphere *s)
 {
   return (Ball){s->center.x, s->center.y, s->center.z, s->radius};

@@ -21,7 +21,7 @@
  * of the float comparisons (about 2^-20). A ball holding P (or nearly) is a
  * candidate for every ray. The comparisons run on all spheres at once (the
  * lanes of a GCC vector); they only choose which spheres are tested. */
-#include "accel/cones.h"
+#include "index/cones.h"
 
 #include <math.h>
 #include <stdlib.h>

@@ -1,6 +1,6 @@
-/* Fresh memory mapped ahead of the writes (common/pages.h). */
+/* Fresh memory mapped ahead of the writes (fast/pages/pages.h). */
 #define _DEFAULT_SOURCE /* madvise */
-#include "pages.h"
+#include "pages/pages.h"
 
 #include <omp.h>
 #include <stdbool.h>
