@@ -7,16 +7,20 @@
 
 #include <stdbool.h>
 #include "camera.h"
+#include "disc.h"
 #include "light.h"
 #include "material.h"
 #include "plane.h"
 #include "quad.h"
 #include "sphere.h"
 
-typedef enum ShapeType { SHAPE_SPHERE, SHAPE_PLANE, SHAPE_QUAD } ShapeType;
+/* The kinds of shape an instance may be. Each has a case in scene.c's
+ * switches (scene_instance_hit_t, its hit_fill, scene_shape_name), which
+ * -Wswitch checks; docs/extending.md lists what a new one takes. */
+typedef enum ShapeType { SHAPE_SPHERE, SHAPE_PLANE, SHAPE_QUAD, SHAPE_DISC } ShapeType;
 
 /* A shape paired with a material or a light. A sphere is kept in place; a
- * plane or a quad, larger, where the scene keeps it, so that every instance
+ * larger shape where the scene keeps it (scene_keep), so that every instance
  * stays as small as a sphere's. */
 typedef struct Instance {
   ShapeType shape;
@@ -24,8 +28,9 @@ typedef struct Instance {
   int light;            /* index into Scene.lights, or -1 for a lit object */
   union {
     Sphere sphere;      /* SHAPE_SPHERE */
-    const Plane *plane; /* SHAPE_PLANE: the scene's copy (scene_add_plane) */
+    const Plane *plane; /* SHAPE_PLANE: the scene's copy (scene_keep) */
     const Quad *quad;   /* SHAPE_QUAD: its area light's, Scene.lights[light].quad */
+    const Disc *disc;   /* SHAPE_DISC: the scene's copy (scene_keep) */
   };
 } Instance;
 
@@ -74,8 +79,9 @@ typedef struct Scene {
   int n_materials;
   Light *lights;
   int n_lights;
-  Plane **planes;          /* the planes instances point to, each owned */
-  int n_planes;
+  void **kept;             /* the shapes instances point to (scene_keep),
+                            * each owned */
+  int n_kept;
   Instance *instances;     /* lit shapes first, then the lights' shapes */
   int n_instances;         /* all instances the camera sees */
   int n_shapes;            /* instances [0, n_shapes) have a material */
@@ -101,9 +107,17 @@ bool scene_add_material(Scene *scene, const Material *m);
 bool scene_add_light(Scene *scene, const Light *light);
 bool scene_add_instance(Scene *scene, const Instance *inst);
 
-/* A copy of the plane, kept by the scene until scene_free, for a
- * SHAPE_PLANE instance to point to; NULL when out of memory. */
+/* scene_keep for a plane (a SHAPE_PLANE instance's). */
 const Plane *scene_add_plane(Scene *scene, const Plane *plane);
+
+/* A copy of the `size` bytes of `shape` (a Plane, a Disc, ...), kept by the
+ * scene until scene_free, for an instance to point to; NULL when out of
+ * memory (one line printed). */
+const void *scene_keep(Scene *scene, const void *shape, size_t size);
+
+/* The shape's name, as the statement that makes it is written ("sphere");
+ * a quad is an area light's. */
+const char *scene_shape_name(ShapeType shape);
 
 /* Get the scene ready for a step that handles `features` (SceneFeature bits):
  * drop what it cannot render (recorded in info.ignored), order the instances,

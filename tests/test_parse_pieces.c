@@ -23,8 +23,10 @@ static bool same_instance(const Instance *a, const Instance *b)
   switch (a->shape) {
   case SHAPE_SPHERE: return memcmp(&a->sphere, &b->sphere, sizeof a->sphere) == 0;
   case SHAPE_PLANE:  return memcmp(a->plane, b->plane, sizeof *a->plane) == 0;
-  default:           return memcmp(a->quad, b->quad, sizeof *a->quad) == 0;
+  case SHAPE_QUAD:   return memcmp(a->quad, b->quad, sizeof *a->quad) == 0;
+  case SHAPE_DISC:   return memcmp(a->disc, b->disc, sizeof *a->disc) == 0;
   }
+  return false;
 }
 
 static bool same_instances(const Instance *a, const Instance *b, int n)

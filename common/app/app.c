@@ -114,13 +114,7 @@ static int run_trace(int argc, char **argv, const Step *step, const Options *o,
   return o->trace_x < scene->width && o->trace_y < scene->height ? 1 : 2;
 }
 
-enum { FREE_BESIDE_FROM = 65536 }; /* instances: a scene this large is freed beside the save */
-
-/* Render the picture, or with --aov the quantity, and save it to `out`. The
- * scene is not needed past the render: a large one is freed on another
- * thread while this one saves the picture (10^6 spheres: about 10 ms of
- * unmapping that one thread did after the save; docs/reliability.md,
- * "Eighth pass"). */
+/* Render the picture, or with --aov the quantity, and save it to `out`. */
 static bool render_and_save(const Step *step, const Options *o, Scene *scene,
                             const RenderSettings *set, Film *film, const char *out)
 {
@@ -135,21 +129,9 @@ static bool render_and_save(const Step *step, const Options *o, Scene *scene,
       aov_for_bytes((AovKind)o->aov, scene->samples, film);
     tm = TONEMAP_CLAMP;
   }
-  int samples = scene->samples;
-  bool saved = false;
-  if (scene->n_instances >= FREE_BESIDE_FROM && omp_get_max_threads() > 1) {
-#pragma omp parallel sections
-    {
-#pragma omp section
-      saved = image_save(out, film->width, film->height, film->rgb, tm);
-#pragma omp section
-      scene_free(scene);
-    }
-  } else { /* not inside a region of one thread: the PNG's bands would get threads of their own */
-    saved = image_save(out, film->width, film->height, film->rgb, tm);
-  }
+  bool saved = image_save(out, film->width, film->height, film->rgb, tm);
   if (saved && !o->quiet)
-    summary(step, out, film, samples, &st);
+    summary(step, out, film, scene->samples, &st);
   return saved;
 }
 

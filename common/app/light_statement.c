@@ -3,6 +3,9 @@
  * docs/scene-format.md, "Statements". */
 #include "app/light_statement.h"
 
+#include <stdio.h>
+#include <string.h>
+
 #include "app/limits.h"
 
 static bool light_point(Lexer *lx, Light *light)
@@ -43,19 +46,28 @@ static bool light_area(Lexer *lx, Light *light)
   return true;
 }
 
+/* The light types by their word, in the order messages list them
+ * (docs/scene-format.md, "Statements"). */
+static const struct LightKind {
+  const char *word;
+  bool (*read)(Lexer *lx, Light *light);
+} KINDS[] = {{"point", light_point}, {"directional", light_directional}, {"area", light_area}};
+enum { KIND_COUNT = sizeof KINDS / sizeof *KINDS };
+
 bool light_statement(Lexer *lx, Light *light)
 {
-  static const char *const types[] = {"point", "directional", "area"};
-  int k = 0;
-  while (k < 3 && !lexer_peek_is(lx, types[k]))
-    k++;
-  if (k == 3 && lx->pos < lx->n)
-    return lexer_fail_unknown(lx, "a light type", types, 3);
-  if (k == 3)
-    return lexer_fail(lx, lx->end_col, "expected a light type (point, directional, "
-                      "area), found end of line");
-  lx->pos++;
-  return k == 0 ? light_point(lx, light)
-         : k == 1 ? light_directional(lx, light) : light_area(lx, light);
+  const char *words[KIND_COUNT];
+  for (int k = 0; k < KIND_COUNT; k++) {
+    if (lexer_peek_is(lx, KINDS[k].word)) {
+      lx->pos++;
+      return KINDS[k].read(lx, light);
+    }
+    words[k] = KINDS[k].word;
+  }
+  if (lx->pos < lx->n)
+    return lexer_fail_unknown(lx, "a light type", words, KIND_COUNT);
+  char list[96] = "";
+  for (int k = 0; k < KIND_COUNT; k++)
+    snprintf(list + strlen(list), sizeof list - strlen(list), "%s%s", k ? ", " : "", words[k]);
+  return lexer_fail(lx, lx->end_col, "expected a light type (%s), found end of line", list);
 }
-

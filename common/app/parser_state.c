@@ -270,34 +270,73 @@ static bool st_plane(Parser *p)
   return add_shape(p, &inst, &p->lx.tok[f[2].val]);
 }
 
+static bool st_disc(Parser *p)
+{
+  static const Key keys[] = {{"center", KEY_POINT, true}, {"normal", KEY_VEC, true},
+                             {"radius", KEY_NUM, true}, {"material", KEY_NAME, true}};
+  Field f[4];
+  if (!fields_read(&p->lx, "disc", keys, 4, f) || !limits_direction(&p->lx, &f[1], "normal") ||
+      !limits_length(&p->lx, &f[2], "radius"))
+    return false;
+  Disc disc = disc_make(f[0].v, f[1].v, f[2].v.x);
+  Instance inst = {.shape = SHAPE_DISC, .disc = scene_keep(p->scene, &disc, sizeof disc)};
+  if (!inst.disc)
+    return false;
+  return add_shape(p, &inst, &p->lx.tok[f[3].val]);
+}
+
+static bool st_ambient(Parser *p)
+{
+  return st_colour(p, ONCE_AMBIENT, "ambient", &p->scene->ambient);
+}
+
+static bool st_background(Parser *p)
+{
+  return st_colour(p, ONCE_BACKGROUND, "background", &p->scene->background);
+}
+
+static bool st_light(Parser *p)
+{
+  Light light;
+  return light_statement(&p->lx, &light) && scene_add_light(p->scene, &light);
+}
+
+static bool st_samples(Parser *p)
+{
+  return st_count(p, ONCE_SAMPLES, "samples", &p->scene->samples);
+}
+
+static bool st_light_samples(Parser *p)
+{
+  return st_count(p, ONCE_LIGHT_SAMPLES, "light_samples", &p->scene->light_samples);
+}
+
+/* The statements by their first word, in the order an unknown word's
+ * message lists them (docs/scene-format.md, "Statements"); each reads the
+ * rest of its line. */
+static const struct Statement {
+  const char *word;
+  bool (*read)(Parser *p);
+} STATEMENTS[] = {
+    {"film", st_film},         {"camera", st_camera},   {"ambient", st_ambient},
+    {"background", st_background}, {"material", st_material}, {"plane", st_plane},
+    {"sphere", st_sphere},     {"disc", st_disc},       {"light", st_light},
+    {"samples", st_samples},   {"light_samples", st_light_samples},
+};
+enum { STATEMENT_COUNT = sizeof STATEMENTS / sizeof *STATEMENTS };
+
 static bool statement(Parser *p)
 {
-  static const char *const words[] = {"film", "camera", "ambient", "background",
-                                      "material", "plane", "sphere", "light",
-                                      "samples", "light_samples"};
   Lexer *lx = &p->lx;
-  Scene *s = p->scene;
-  int k = 0;
-  while (k < 10 && !lexer_is(&lx->tok[0], words[k]))
-    k++;
-  if (k == 10)
-    return lexer_fail_unknown(lx, "a statement", words, 10);
-  lx->pos++;
-  switch (k) {
-  case 0: return st_film(p);
-  case 1: return st_camera(p);
-  case 2: return st_colour(p, ONCE_AMBIENT, "ambient", &s->ambient);
-  case 3: return st_colour(p, ONCE_BACKGROUND, "background", &s->background);
-  case 4: return st_material(p);
-  case 5: return st_plane(p);
-  case 6: return st_sphere(p);
-  case 7: {
-    Light light;
-    return light_statement(lx, &light) && scene_add_light(s, &light);
-  }
-  case 8: return st_count(p, ONCE_SAMPLES, "samples", &s->samples);
-  default: return st_count(p, ONCE_LIGHT_SAMPLES, "light_samples", &s->light_samples);
-  }
+  for (int k = 0; k < STATEMENT_COUNT; k++)
+    if (lexer_is(&lx->tok[0], STATEMENTS[k].word)) {
+      lx->pos++;
+      return STATEMENTS[k].read(p);
+    }
+  const char *words[STATEMENT_COUNT];
+  for (int k = 0; k < STATEMENT_COUNT; k++)
+    words[k] = STATEMENTS[k].word;
+  return lexer_fail_unknown(lx, "a statement", words, STATEMENT_COUNT);
 }
 
 bool parser_fast_lines = true;

@@ -8,27 +8,15 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* The shape's name in a trace: its statement's first word (a switch, so
- * that a ShapeType without a case here fails to compile: -Wswitch). */
-static const char *shape_name(ShapeType shape)
-{
-  switch (shape) {
-  case SHAPE_SPHERE: return "sphere";
-  case SHAPE_PLANE: return "plane";
-  case SHAPE_QUAD: return "quad";
-  }
-  return "?";
-}
-
 /* "#2 sphere red", "#5 sphere light 0": what an instance is. */
 static void label(const Scene *scene, const Instance *inst, char *buf, size_t size)
 {
   int id = (int)(inst - scene->instances);
   if (inst->material >= 0)
-    snprintf(buf, size, "#%d %s %s", id, shape_name(inst->shape),
+    snprintf(buf, size, "#%d %s %s", id, scene_shape_name(inst->shape),
              scene->materials[inst->material].name);
   else
-    snprintf(buf, size, "#%d %s light %d", id, shape_name(inst->shape), inst->light);
+    snprintf(buf, size, "#%d %s light %d", id, scene_shape_name(inst->shape), inst->light);
 }
 
 /* The nearest of the first `count` instances on the ray before *tmax (*tmax

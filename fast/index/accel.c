@@ -433,9 +433,8 @@ static bool instance_may_occlude(const Instance *inst, const ShadowHull *h)
   switch (inst->shape) {
   case SHAPE_SPHERE: return hull_may_meet_sphere(h, inst->sphere.center, inst->sphere.radius);
   case SHAPE_PLANE: return hull_may_meet_plane(h, inst->plane);
-  case SHAPE_QUAD: return true;
+  default: return true; /* a quad, a disc: may (conservative) */
   }
-  return true;
 }
 
 /* Not inlined: once per shading point, and inlined (LTO) into a step's

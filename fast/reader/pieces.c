@@ -122,23 +122,24 @@ static void merge_shapes(Scene *s, const Scene *q, int known, int first_material
   s->n_instances += q->n_instances;
 }
 
-/* Piece q's planes, which its shapes point to, handed to s; false when out
- * of memory (each piece then still owns its own). */
-static bool take_planes(Scene *s, Scene *q)
+/* Piece q's kept shapes (planes, discs: scene_keep), which its instances
+ * point to, handed to s; false when out of memory (each piece then still
+ * owns its own). */
+static bool take_kept(Scene *s, Scene *q)
 {
-  if (q->n_planes == 0)
+  if (q->n_kept == 0)
     return true;
-  if (!grow_reserve((void **)&s->planes, (size_t)s->n_planes, (size_t)q->n_planes,
-                    sizeof *s->planes))
+  if (!grow_reserve((void **)&s->kept, (size_t)s->n_kept, (size_t)q->n_kept,
+                    sizeof *s->kept))
     return false;
-  memcpy(s->planes + s->n_planes, q->planes, (size_t)q->n_planes * sizeof *q->planes);
-  s->n_planes += q->n_planes;
-  q->n_planes = 0;
+  memcpy(s->kept + s->n_kept, q->kept, (size_t)q->n_kept * sizeof *q->kept);
+  s->n_kept += q->n_kept;
+  q->n_kept = 0;
   return true;
 }
 
 /* Append piece q to piece 0: materials (each name new; q's first `known`
- * were piece 0's to begin with), lights, planes, shapes (their material
+ * were piece 0's to begin with), lights, kept shapes, shapes (their material
  * indices moved past piece 0's), references to materials not defined in q before
  * them (resolved when piece 0 now has the material, else left to resolve).
  * False on a conflict or out of memory. */
@@ -158,7 +159,7 @@ static bool merge(Piece *to, Piece *q, int known)
   for (int k = 0; k < q->scene.n_lights; k++)
     if (!scene_add_light(s, &q->scene.lights[k]))
       return false;
-  if (!take_planes(s, &q->scene))
+  if (!take_kept(s, &q->scene))
     return false;
   merge_shapes(s, &q->scene, known, first_material);
   return parser_pending_merge(&to->p, &q->p, first_instance);
