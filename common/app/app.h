@@ -4,6 +4,7 @@
 #ifndef RT_APP_H
 #define RT_APP_H
 
+#include "app/render_point.h"
 #include "app/trace.h"
 
 typedef struct Step {

@@ -1,7 +1,7 @@
 /* Adaptive sampling's lattice points (step 07): render_point remembers the
  * colours a tile has traced, so that a pixel corner is traced once for the
  * four pixels around it. docs/07-antialiasing.md, "Adaptive sampling". */
-#include "app/render.h"
+#include "app/render_point.h"
 
 #include <stdlib.h>
 
