@@ -102,11 +102,11 @@ bench-deps:
 
 # ---------------------------------------------------------------- common library
 # The speed pack (fast/) is archived with the core; FAST=0 links the plain
-# answers of common/app/no_pack.c in place of fast/pack.c, so that no step
-# binary takes any of it (same pictures: docs/performance.md).
+# answers of common/app/pack.c in place of the pack's (fast/fast.c), so that
+# no step binary takes any of it (same pictures: docs/performance.md).
 FAST ?= 1
-PACK_SRC   := $(if $(filter 0,$(FAST)),common/app/no_pack.c,fast/pack.c)
-COMMON_SRC := $(filter-out common/app/no_pack.c,$(wildcard common/*.c common/*/*.c)) \
+PACK_SRC   := $(if $(filter 0,$(FAST)),common/app/pack.c,fast/fast.c)
+COMMON_SRC := $(filter-out common/app/pack.c,$(wildcard common/*.c common/*/*.c)) \
               $(wildcard fast/*/*.c) $(PACK_SRC)
 COMMON_OBJ := $(COMMON_SRC:%.c=$(BUILD)/obj/%.o)
 LIBCOMMON  := $(BUILD)/libcommon.a

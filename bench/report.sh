@@ -241,6 +241,16 @@ pairs' ratios (with hooks / without; 1 = no change).
 
 $(table "$D/trace-off.csv" 2>/dev/null)
 
+## Without the speed pack
+
+Every step's default render (800x600, all cores) by the default build and by
+\`make FAST=0\` (the same pictures without fast/: no index, no shadow views,
+one-pass reader, PNG row by row), in turn: whole-process time (s, medians)
+and the median of the pairs' ratios (FAST=0 / default; above 1, the pack
+gains).
+
+$(table "$D/pack-off.csv" 2>/dev/null)
+
 ## Scaling: spheres on the plane
 
 \`bench/gen_spheres N\` writes N spheres on a jittered grid over the same patch

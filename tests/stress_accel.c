@@ -70,7 +70,7 @@ static void check_answers(const Scene *ps, Rng *gen, const char *what, int rays)
   int n = s.n_instances;
   cr_assert(s.index, "accel_build (given code) built no index");
   Check c = CHECK("scene index (given code: fast/index/)",
-                  "docs/performance.md, \"The scene queries (fast/index/accel.c, fast/index/bvh.c)\"");
+                  "docs/performance.md, \"The scene queries\"");
   for (int k = 0; k < rays; k++) {
     Ray r = random_ray(&s, &g);
     if (k % 4 == 3) /* from the eye: the rays the cones know */
@@ -191,7 +191,7 @@ static Balls packed(const Ball *balls)
 Test(accel, children_lie_in_order_along_their_axis)
 {
   Check c = CHECK("bvh_build (given code: fast/index/bvh.c)",
-                  "docs/performance.md, \"The scene queries (fast/index/accel.c, fast/index/bvh.c)\"");
+                  "docs/performance.md, \"The scene queries\"");
   for (int n = 3000; n <= 40000; n += 37000) {
     for (int flat = 0; flat < 2; flat++) {
       Rng g = rng_make(11, (uint32_t)n, (uint32_t)flat);
@@ -270,7 +270,7 @@ static int walk(Check *c, const Bvh *bvh, const Ball *balls, int node, int depth
 Test(accel, every_slot_is_one_node_and_every_ball_in_one_leaf)
 {
   Check c = CHECK("bvh_build (given code: fast/index/bvh.c)",
-                  "docs/performance.md, \"The scene queries (fast/index/accel.c, fast/index/bvh.c)\"");
+                  "docs/performance.md, \"The scene queries\"");
   static const int sizes[] = {1000, 40000};
   for (int s = 0; s < 2; s++)
     for (int leaf = 1; leaf <= 4; leaf += 3) {

@@ -13,6 +13,7 @@
 #include "app/parser.h"
 #include "app/parser_state.h"
 #include "reader/pieces.h"
+#include "reader/sphere_line.h"
 
 /* Two instances with the same shape, compared by the union member it uses
  * (the rest of the union's bytes are unspecified after a member's store). */
@@ -382,7 +383,7 @@ static size_t sphere_variant(uint64_t *s, char *out, size_t size)
   return len;
 }
 
-/* `text` parsed with sphere_line (parser_fast_lines) in `pieces` pieces and
+/* `text` parsed with sphere_line (sphere_line_on) in `pieces` pieces and
  * by the general path whole: one check that they give the same scene or
  * the same message (`what` names the text). Whether the general path read
  * a scene. */
@@ -391,11 +392,11 @@ static bool fast_as_general(Check *c, const char *text, size_t len, int pieces,
 {
   char err_f[512], err_g[512];
   Scene a, b;
-  parser_fast_lines = true;
+  sphere_line_on = true;
   bool ok_f = parse_in_pieces(text, len, pieces, &a, err_f, sizeof err_f);
-  parser_fast_lines = false;
+  sphere_line_on = false;
   bool ok_g = parse_in_pieces(text, len, 1, &b, err_g, sizeof err_g);
-  parser_fast_lines = true;
+  sphere_line_on = true;
   CHECK_THAT(c, same_parse(ok_g, err_g, &b, ok_f, err_f, &a),
              "%s:\n  expected (general path) %s%.200s\n  got (fast path)      %s%.200s", what,
              ok_g ? "a scene" : "the error ", err_g,
@@ -408,7 +409,7 @@ static bool fast_as_general(Check *c, const char *text, size_t len, int pieces,
 }
 
 /* The sphere lines that parser_statements reads straight from the text
- * (sphere_line) against the general path (parser_fast_lines off): 20000
+ * (sphere_line) against the general path (sphere_line_on off): 20000
  * lines, each alone between a material defined before and one defined
  * after, with and without a final newline; the same scene, or the same
  * message. */
@@ -431,7 +432,7 @@ Test(parse_pieces, sphere_lines_read_fast_parse_as_the_general_path, .timeout = 
              newline ? " and a newline" : "");
     good += fast_as_general(&c, text, len, 1, what);
   }
-  parser_fast_lines = true;
+  sphere_line_on = true;
   CHECK_THAT(&c, good > 5000 && good < 18000, "expected both good and bad lines among the "
              "20000, found %d good", good);
   CHECK_DONE(&c);
@@ -487,7 +488,7 @@ Test(parse_pieces, sphere_lines_naming_many_materials_parse_as_the_general_path,
     snprintf(what, sizeof what, "text %d (%d sphere lines, %d pieces)", k, lines, 1 + k % 3);
     good += fast_as_general(&c, text, len, 1 + k % 3, what);
   }
-  parser_fast_lines = true;
+  sphere_line_on = true;
   CHECK_THAT(&c, good > 900 && good < 1400, "expected both good and bad texts among the "
              "1500, found %d good", good);
   CHECK_DONE(&c);

@@ -1,6 +1,6 @@
 /* The speed pack's interface: what the program asks of the speed-ups. The
- * pack (fast/pack.c) implements it; a build with FAST=0 links the plain
- * answers of common/app/no_pack.c instead. Either way every test of a ray
+ * pack (fast/fast.c) implements it; a build with FAST=0 links the plain
+ * answers of common/app/pack.c instead. Either way every test of a ray
  * against a shape is the shape's own function, and the pictures are the
  * same (docs/performance.md). */
 #ifndef RT_PACK_H
@@ -8,6 +8,7 @@
 
 #include <stdbool.h>
 #include <stddef.h>
+#include <stdio.h>
 #include "app/render.h"
 #include "scene.h"
 
@@ -40,10 +41,25 @@ int pack_light_view(const Scene *scene, const Hit *hit, const Quad *q,
  * verdict; false (nothing done) to leave it to parser_load_whole. */
 bool pack_parse(const char *file, const char *text, size_t len, Scene *scene, bool *ok);
 
+struct Parser;
+
+/* Read the lines that follow in p's text itself where it can, faster than
+ * parser_statements and as it would (the same shapes, any line of doubt
+ * left to it); false when out of memory. */
+bool pack_lines(struct Parser *p);
+
 /* Map the `size` bytes of the regular file open at fd read-only: true, the
  * text at *text (nothing after its last byte); false to read it instead.
  * pack_unmap gives a mapped text back. */
 bool pack_map(int fd, size_t size, char **text);
 void pack_unmap(char *text, size_t size);
+
+/* Row j (top row first) of a picture as its w * 3 bytes, RGB. */
+typedef void (*PackRowFn)(const void *picture, int j, unsigned char *out);
+
+/* Write the PNG of the w x h picture whose rows `row` gives to f: 1 when
+ * written, 0 when it failed (errno, or ENOMEM), -1 when the pack leaves it
+ * to the plain writer. */
+int pack_png(FILE *f, int w, int h, PackRowFn row, const void *picture);
 
 #endif

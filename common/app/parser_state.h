@@ -5,7 +5,6 @@
 #ifndef RT_PARSER_STATE_H
 #define RT_PARSER_STATE_H
 
-#include <stdint.h>
 
 #include "app/lexer.h"
 #include "app/names.h"
@@ -27,15 +26,6 @@ typedef struct ForwardName {
   char name[MATERIAL_NAME_MAX];
 } ForwardName;
 
-/* A material name a sphere line found (common/app/parser_state.c, sphere_line):
- * its bytes as two words, zero past its length (at most 16 bytes). */
-typedef struct RecentName {
-  uint64_t w[2];
-  int len, material;
-} RecentName;
-
-enum { RECENT_NAMES = 8 };
-
 typedef struct Parser {
   Lexer lx;
   Scene *scene;
@@ -49,8 +39,6 @@ typedef struct Parser {
   int room; /* 0: shapes go to the scene's growing array; > 0: a piece of a
              * large text (fast/reader/pieces.c), whose shapes go in place to
              * scene->instances[0 .. room), an array it does not own */
-  RecentName recent[RECENT_NAMES]; /* the last names sphere_line found */
-  unsigned n_recent;                /* how many it added, the oldest replaced */
 } Parser;
 
 /* The scene's materials as records of the names table. */
@@ -75,10 +63,11 @@ bool parser_pending_add(Parser *p, int instance, int line, int col, const char *
  * memory. */
 bool parser_pending_merge(Parser *p, const Parser *q, int first_instance);
 
-/* Whether parser_statements reads the common sphere line straight from the
- * text (common/app/parser_state.c, sphere_line; true). The tests turn it off to
- * compare with the general path. */
-extern bool parser_fast_lines;
+/* Add a lit instance whose material, the name token `name`, is
+ * inst->material (-1: not defined yet, resolved at the end). A piece writes
+ * in place, and fails (silently: the whole text is then parsed again) should
+ * it find more shapes than its room, one a line. */
+bool parser_place_shape(Parser *p, Instance *inst, const Token *name);
 
 /* Resolve p->pending; false (printed) at the first undefined name. */
 bool parser_resolve(Parser *p);

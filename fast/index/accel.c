@@ -280,14 +280,13 @@ static bool lit_sphere(const Scene *scene, int k)
  * else into acc->others (instance order, so the lit ones first); returns the
  * spheres' count. Large scenes in blocks, one per thread: each block counted,
  * then filled at its place, so the lists are the same for any thread count
- * (with the balls, each instance's cache line is read twice, not three
- * times, and the sort no longer takes one thread: docs/reliability.md,
- * "Fourth pass"). *base: when a large scene's lit spheres are the instances
+ * (the balls written with the ids, so that each instance is read twice, not
+ * three times). *base: when a large scene's lit spheres are the instances
  * base, base + 1, ... (a file of spheres, its planes before or after them),
  * ids[] and balls[] are left unwritten, sphere k being instance base + k,
  * which the build reads in place; else -1. The fill is then only that of the
- * few others: one pass over the instances instead of two ("Ninth pass"),
- * and no copy of the spheres ("Twelfth pass"). */
+ * few others: one pass over the instances instead of two, and no copy of
+ * the spheres. */
 static int sort_instances(const Scene *scene, Accel *acc, int *ids, Ball *balls, int *base)
 {
   int n = scene->n_instances, threads = omp_get_max_threads();
@@ -437,8 +436,8 @@ static bool instance_may_occlude(const Instance *inst, const ShadowHull *h)
   }
 }
 
-/* Not inlined: once per shading point, and inlined (LTO) into a step's
- * sample loop it made that loop's code 10 % slower even where never called. */
+/* Not inlined: it runs once per shading point, and inlined (LTO) into a
+ * step's sample loop it slowed that loop even where never called. */
 __attribute__((noinline)) int accel_quad_occluders(const Scene *scene, const Hit *hit,
                                                    const Quad *q, int *ids, int max)
 {

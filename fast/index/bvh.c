@@ -327,8 +327,7 @@ bool bvh_build(Bvh *bvh, Balls balls, int n, int leaf_max)
   if (ok && n > CLUSTER_FROM && !b.one_leaf && leaf_max >= 2) {
     /* The node array (64 n bytes), written only once the clusters are cut,
      * holds the sort's pairs (16 n bytes) until then, so the nodes land on
-     * pages already touched (10^6 spheres: 8 000 fewer page faults;
-     * docs/reliability.md, "Fifth pass"); the clusters are cut from the
+     * pages already touched (fewer page faults); the clusters are cut from the
      * sorted pairs themselves. */
     uint64_t *scratch = (uint64_t *)(void *)b.nodes;
     pages_populate_parallel(scratch, (size_t)n * 2 * sizeof *scratch);

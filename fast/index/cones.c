@@ -307,7 +307,7 @@ Cones *cones_build(const Scene *scene, const int *ids, int n)
    * registers still in use (the balls above are filled 256 bits at a time
    * and a path without lights ends with no vzeroupper): every legacy SSE
    * instruction after that waits on them, libm's fmaxf in step 02's pixel
-   * among them, which made that step's frame 50 % slower. */
+   * among them, which slowed that step's frame by half. */
   __builtin_ia32_vzeroupper();
 #endif
   return c;

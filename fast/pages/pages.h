@@ -1,9 +1,9 @@
 /* Fresh memory mapped ahead of the loop that writes it. The first write to
  * each 4 KB page of a new array is a page fault, and a 10^6-sphere scene
- * takes about 30 000 of them; asking the kernel for a block's pages in one
- * call (madvise MADV_POPULATE_WRITE, Linux 5.14 on) costs about a third
- * less than faulting them one by one, and each thread asks for the block it
- * is about to write. docs/reliability.md, "Large scenes", "Eighth pass". */
+ * takes tens of thousands of them; asking the kernel for a block's pages in
+ * one call (madvise MADV_POPULATE_WRITE, Linux 5.14 on) costs less than
+ * faulting them one by one, and each thread asks for the block it is about
+ * to write. */
 #ifndef RT_PAGES_H
 #define RT_PAGES_H
 

@@ -1,12 +1,15 @@
-/* The speed pack behind common/app/pack.h: the scene's index (index/), the
- * area lights' shadow views (index/light_view.c), the large scene's reader
- * (reader/). */
+/* The speed pack behind common/app/pack.h, linked by default (FAST=1):
+ * the scene's index (index/), the area lights' shadow views
+ * (index/light_view.c), the large scene's reader (reader/), PNG in
+ * parallel bands (png/). */
 #include "app/pack.h"
 
 #include "index/accel.h"
 #include "index/light_view.h"
+#include "png/bands.h"
 #include "reader/mapped.h"
 #include "reader/pieces.h"
+#include "reader/sphere_line.h"
 #include "sampler.h"
 
 bool pack_index(Scene *scene)
@@ -39,6 +42,11 @@ bool pack_parse(const char *file, const char *text, size_t len, Scene *scene, bo
   return pieces_parse(file, text, len, scene, ok);
 }
 
+bool pack_lines(struct Parser *p)
+{
+  return sphere_line_run(p) == 0;
+}
+
 bool pack_map(int fd, size_t size, char **text)
 {
   return mapped_open(fd, size, text);
@@ -47,4 +55,9 @@ bool pack_map(int fd, size_t size, char **text)
 void pack_unmap(char *text, size_t size)
 {
   mapped_close(text, size);
+}
+
+int pack_png(FILE *f, int w, int h, PackRowFn row, const void *picture)
+{
+  return bands_write_png(f, w, h, row, picture) ? 1 : 0;
 }
