@@ -14,6 +14,7 @@ int pack_light_view(const Scene *scene, const Hit *hit, const Quad *q,
 {
   (void)hit;
   (void)q;
+  (void)set;
   view->scene = *scene;
   return scene->light_samples;
 }
