@@ -1,12 +1,10 @@
 /* The speed pack behind common/app/pack.h, linked by default (FAST=1):
  * the scene's index (index/), the area lights' shadow views
- * (index/light_view.c), the large scene's reader (reader/), PNG in
- * parallel bands (png/). */
+ * (index/light_view.c), the large scene's reader (reader/). */
 #include "app/pack.h"
 
 #include "index/accel.h"
 #include "index/light_view.h"
-#include "png/bands.h"
 #include "reader/mapped.h"
 #include "reader/pieces.h"
 #include "reader/sphere_line.h"
@@ -55,9 +53,4 @@ bool pack_map(int fd, size_t size, char **text)
 void pack_unmap(char *text, size_t size)
 {
   mapped_close(text, size);
-}
-
-int pack_png(FILE *f, int w, int h, PackRowFn row, const void *picture)
-{
-  return bands_write_png(f, w, h, row, picture) ? 1 : 0;
 }

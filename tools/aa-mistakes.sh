@@ -9,11 +9,11 @@ make --no-print-directory build/bin/07-antialiasing >/dev/null
 # The Makefile's -O3 -march=native: cglm aligns its matrices by instruction
 # set, so Scene's layout must match libcommon's.
 gcc -std=c11 -O3 -march=native -fopenmp -ffp-contract=off -D_POSIX_C_SOURCE=200809L -Wall -Wextra \
-  -Werror -Icommon -Isteps/07-antialiasing $(pkg-config --cflags cglm stb) \
+  -Werror -Icommon -Ifast -Isteps/07-antialiasing $(pkg-config --cflags cglm stb) \
   tools/aa-mistakes.c steps/07-antialiasing/shade.c build/obj/gen/07-antialiasing-scene.o \
   build/libcommon.a -lpng -lz -lstb -lm -o $bin/aa-mistakes
 gcc -std=c11 -O3 -march=native -fopenmp -ffp-contract=off -D_POSIX_C_SOURCE=200809L -Wall -Wextra \
-  -Werror -Icommon -Isteps/07-antialiasing $(pkg-config --cflags cglm stb libpng) \
+  -Werror -Icommon -Ifast -Isteps/07-antialiasing $(pkg-config --cflags cglm stb libpng) \
   tools/aa-samples.c steps/07-antialiasing/shade.c build/obj/gen/07-antialiasing-scene.o \
   build/libcommon.a -lpng -lz -lstb -lm -o $bin/aa-samples
 mkdir -p docs/img

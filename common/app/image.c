@@ -1,12 +1,11 @@
 /* Image files and comparison (step 01): tone map names, atomic writes
  * (temporary file, then rename) with every byte from film_to_byte, PFM by
- * hand, PNG through libpng (or the speed pack's, app/pack.h),
+ * hand, PNG through libpng,
  * JPG/HDR and loading through stb. docs/01-film.md. */
 #include "app/image.h"
 
 #include "film.h"
 #include "app/outfile.h"
-#include "app/pack.h"
 
 #include <errno.h>
 #include <math.h>
@@ -75,9 +74,9 @@ static unsigned char *to_bytes(int w, int h, const float *rgb, Tonemap tm)
 
 /* PFM: header, then little-endian floats, bottom row first (the film's own
  * order). A negative scale says little-endian. The body goes out in blocks
- * of 64 KB converted in one buffer on the stack: a write per float cost more
- * than rendering a small picture, and a buffer for the whole body (5.8 MB at
- * 800x600) cost about 1 400 page faults. */
+ * of 64 KB converted in one buffer on the stack: a write per float costs
+ * more than rendering a small picture, and a buffer for the whole body
+ * costs a page fault per 4 KB. */
 static bool write_pfm(OutFile *out, int w, int h, const float *rgb)
 {
   enum { BLOCK = 1 << 14 }; /* floats */
@@ -150,12 +149,6 @@ static bool write_png(OutFile *out, const Bytes *b)
   return ok;
 }
 
-/* Row j of the picture a Bytes points to (pack_png's row function). */
-static void picture_row(const void *picture, int j, unsigned char *out)
-{
-  bytes_row(picture, j, out);
-}
-
 /* Encode into `out`; false when the format is unknown or memory is short. */
 static bool encode(OutFile *out, const char *ext, int w, int h, const float *rgb,
                    Tonemap tm)
@@ -173,11 +166,8 @@ static bool encode(OutFile *out, const char *ext, int w, int h, const float *rgb
     free(up);
     return ok != 0;
   }
-  if (strcmp(ext, "png") == 0) {
-    Bytes b = {w, h, rgb, tm};
-    int packed = pack_png(out->f, w, h, picture_row, &b); /* in parallel, when it can */
-    return packed >= 0 ? packed == 1 : write_png(out, &b);
-  }
+  if (strcmp(ext, "png") == 0)
+    return write_png(out, &(Bytes){w, h, rgb, tm});
   unsigned char *px = to_bytes(w, h, rgb, tm);
   if (!px)
     return false;

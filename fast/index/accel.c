@@ -19,7 +19,6 @@
 #include "index/bvh.h"
 #include "index/cones.h"
 #include "index/hull.h"
-#include "pages/pages.h"
 
 enum {
   STACK = 64,  /* traversal stack: the tree is at most about 60 levels deep */
@@ -328,8 +327,6 @@ static int sort_instances(const Scene *scene, Accel *acc, int *ids, Ball *balls,
 #pragma omp parallel for schedule(static, 1) if (blocks > 1)
     for (int b = 0; b < blocks; b++) {
       int s = spheres[b], o = first[b] - spheres[b];
-      if (blocks > 1) /* a large scene: its fresh pages in one call each */
-        pages_populate(ids + s, (size_t)(spheres[b + 1] - s) * sizeof *ids);
       for (int k = first[b]; k < first[b + 1]; k++) {
         if (lit_sphere(scene, k)) {
           balls[s] = sphere_ball(&scene->instances[k].sphere);

@@ -22,7 +22,6 @@
 
 #include "index/bvh_sah.h"
 #include "index/morton.h"
-#include "pages/pages.h"
 
 enum {
   CLUSTER_FROM = 16384, /* fewer balls: one build over all of them */
@@ -330,8 +329,6 @@ bool bvh_build(Bvh *bvh, Balls balls, int n, int leaf_max)
      * pages already touched (fewer page faults); the clusters are cut from the
      * sorted pairs themselves. */
     uint64_t *scratch = (uint64_t *)(void *)b.nodes;
-    pages_populate_parallel(scratch, (size_t)n * 2 * sizeof *scratch);
-    pages_populate_parallel(b.ids, (size_t)n * sizeof *b.ids);
     ok = morton_sort(balls, n, b.ids, scratch) &&
          build_clustered(&b, balls, n, scratch + n, &n_nodes);
   } else if (ok && (b.items = malloc((size_t)n * sizeof *b.items))) {

@@ -118,8 +118,8 @@ static const char *decimal(const char *s, const char *end, bool *neg, uint64_t *
   return s;
 }
 
-/* 10^-k rounded to double (a multiplication instead of a division: 4
- * cycles of latency where the division took about 14). */
+/* 10^-k rounded to double: a multiplication instead of a division, whose
+ * latency is several times longer. */
 static const double INV10[23] = {1e0,   1e-1,  1e-2,  1e-3,  1e-4,  1e-5,  1e-6,  1e-7,
                                  1e-8,  1e-9,  1e-10, 1e-11, 1e-12, 1e-13, 1e-14, 1e-15,
                                  1e-16, 1e-17, 1e-18, 1e-19, 1e-20, 1e-21, 1e-22};

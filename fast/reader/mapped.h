@@ -1,5 +1,5 @@
 /* A large scene file mapped read-only instead of read into a new buffer: no
- * copy, and its pages entered by the threads at once (pages/pages.h). */
+ * copy of its bytes. */
 #ifndef RT_MAPPED_H
 #define RT_MAPPED_H
 

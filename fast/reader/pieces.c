@@ -15,7 +15,6 @@
 #include "app/parser.h"
 #include "app/parser_state.h"
 #include "grow.h"
-#include "pages/pages.h"
 
 enum {
   PIECE_MIN = 1 << 21, /* bytes: smaller texts are parsed in one piece */
@@ -262,7 +261,6 @@ bool pieces_load(const char *file, const char *text, size_t len, Scene *scene,
   int known = h ? piece[0].scene.n_materials : 0; /* what each piece is given */
 #pragma omp parallel for schedule(dynamic, 1)
   for (int k = h; k < n; k++) {
-    pages_populate(shapes + first[k], (size_t)(first[k + 1] - first[k]) * sizeof *shapes);
     piece_begin(&piece[k], file, text + start[k], start[k + 1] - start[k], shapes + first[k],
                 first[k + 1] - first[k], k == 0);
     piece[k].ok = (!h || preload_materials(&piece[k], &piece[0])) &&
