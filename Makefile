@@ -25,7 +25,7 @@ SCENE_08-area-lights  := scenes/area-lights.scene
 
 # Each step's unit tests: tests/test_<name>.c (make test-step N runs them).
 TESTS_01-film           := film export image
-TESTS_02-intersection   := ray sphere plane scene
+TESTS_02-intersection   := ray sphere plane disc scene
 TESTS_03-camera         := camera parser cli
 TESTS_04-phong          := light phong
 # Steps 05-08 carry step 04's Phong region in their shade.c: they run its tests too.
@@ -92,7 +92,7 @@ STB_IMPL   := $(if $(STB_LIBS),,1)
 CFLAGS  := -std=c11 $(OPT) -g $(OMP_CFLAGS) $(FP_FLAGS) $(FP_FLAGS_$(CC_KIND)) \
            -D_POSIX_C_SOURCE=200809L $(SYS_CFLAGS) \
            -Wall -Wextra -Wpedantic -Wshadow -Wstrict-prototypes \
-           -Wmissing-prototypes $(WERROR) -MMD -MP -Icommon
+           -Wmissing-prototypes $(WERROR) -MMD -MP -Icommon -Ifast
 # TRACE_OFF=1: the trace hooks compiled out (make bench's comparison build;
 # --trace and --aov then record nothing).
 CFLAGS  += $(if $(TRACE_OFF),-DTRACE_COMPILED_OUT)
@@ -171,7 +171,13 @@ bench-deps:
 
 # ---------------------------------------------------------------- common library
 # common/app/stb_impl.c: stb compiled in, where the system has its headers only.
-COMMON_SRC := $(filter-out $(if $(STB_IMPL),,common/app/stb_impl.c),$(wildcard common/*.c common/*/*.c))
+# The speed pack (fast/) is archived with the core; FAST=0 links the plain
+# answers of common/app/pack.c in place of the pack's (fast/fast.c), so that
+# no step binary takes any of it (same pictures: docs/performance.md).
+FAST ?= 1
+PACK_SRC   := $(if $(filter 0,$(FAST)),common/app/pack.c,fast/fast.c)
+COMMON_SRC := $(filter-out common/app/pack.c $(if $(STB_IMPL),,common/app/stb_impl.c),\
+                $(wildcard common/*.c common/*/*.c)) $(wildcard fast/*/*.c) $(PACK_SRC)
 COMMON_OBJ := $(COMMON_SRC:%.c=$(BUILD)/obj/%.o)
 LIBCOMMON  := $(BUILD)/libcommon.a
 

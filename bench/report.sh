@@ -243,6 +243,16 @@ pairs' ratios (with hooks / without; 1 = no change).
 
 $(table "$D/trace-off.csv" 2>/dev/null)
 
+## Without the speed pack
+
+Every step's default render (800x600, all cores) by the default build and by
+\`make FAST=0\` (the same pictures without fast/: no index, no shadow views,
+one-pass reader), in turn: whole-process time (s, medians)
+and the median of the pairs' ratios (FAST=0 / default; above 1, the pack
+gains).
+
+$(table "$D/pack-off.csv" 2>/dev/null)
+
 ## Scaling: spheres on the plane
 
 \`bench/gen_spheres N\` writes N spheres on a jittered grid over the same patch
@@ -257,7 +267,7 @@ $(table "$D/scaling.csv")
 ### Plain loop, one leaf or BVH (RT_ACCEL=loop|flat|bvh)
 
 Trace time (s, median of 3) of step 05 by layout; the default is one leaf up
-to 16 spheres and the BVH above (common/accel/accel.h, ACCEL_FLAT_MAX).
+to 16 spheres and the BVH above (fast/index/accel.h, ACCEL_FLAT_MAX).
 
 $(table "$D/layout.csv")
 EOF

@@ -9,7 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "accel/accel.h"
+#include "index/accel.h"
 #include "app/image.h"
 #include "app/parser.h"
 #include "app/render.h"
@@ -133,7 +133,7 @@ int main(int argc, char **argv)
   Film film;
   if (!film_init(&film, sc[0].width, sc[0].height))
     return 1;
-  RenderSettings set = {.threads = threads, .seed = 1, .samples = 1, .light_samples = 1};
+  RenderSettings set = {.threads = threads, .seed = 1};
   static double sec[N_VAR][MAX_RUNS];
   /* Interleaved (v = 0, 1, 2, 3, 0, 1, ...): drifts of a shared machine hit
    * every variant alike. One untimed frame of each first warms the caches. */

@@ -8,7 +8,7 @@
 # their medians move least with more pairs), BENCH_ERR_RUNS (3) of the error
 # sweeps, THREADS_ALL (default: nproc) the "all cores" thread count,
 # BENCH_PARTS (default: all of them) the parts to run, among: throughput
-# tracing step05 error07 error08 threads scaling report (threads reads the
+# tracing nopack step05 error07 error08 threads scaling report (threads reads the
 # error CSVs; report reads them all), BENCH_PREBUILT=1 to use the programs
 # already in build/ (build/bin, build/bench-notrace, build/bench/gen_spheres
 # and rmse) without compiling anything: a machine that runs but cannot build.
@@ -16,7 +16,8 @@ set -uo pipefail
 cd "$(dirname "$0")/.."
 B=build/bench; D=docs/bench; BIN=build/bin; REF=$B/refs
 RUNS=${BENCH_RUNS:-9}; PAIRS=${BENCH_PAIRS:-21}; ERUNS=${BENCH_ERR_RUNS:-3}; ALL=${THREADS_ALL:-$(nproc)}
-PARTS=" ${BENCH_PARTS:-throughput tracing step05 error07 error08 threads scaling report} "
+PARTS=" ${BENCH_PARTS:-throughput tracing nopack step05 error07 error08 threads scaling report} "
+PRESENT_STEPS=$(cd "$BIN" 2>/dev/null && ls -d [0-9][0-9]-* 2>/dev/null)
 PREBUILT=${BENCH_PREBUILT:-}
 part() { [[ "$PARTS" == *" $1 "* ]]; }
 W=800; H=600
@@ -136,6 +137,28 @@ if { [ -n "$PREBUILT" ] && [ -x "$NT/bin/05-shadows" ] && [ -x "$NT/bin/08-area-
   done
 else
   log "tracing off: the build without hooks failed ($B/notrace.log)"
+fi
+fi
+
+# Without the speed pack (docs/performance.md): every step's default render
+# built with FAST=0 (in build/bench-nofast), both builds run in turn, whole
+# process, medians and the median of the pairs' ratios (FAST=0 / default).
+NF=build/bench-nofast
+if part nopack; then
+echo "step,pairs,wall_default,wall_fast0,wall_ratio" > "$D/pack-off.csv"
+steps_nf=$(for s in $PRESENT_STEPS; do echo "$NF/bin/$s"; done)
+if { [ -n "$PREBUILT" ] && [ -x "$NF/bin/05-shadows" ]; } ||
+   make --no-print-directory BUILD=$NF FAST=0 $steps_nf >"$B/nofast.log" 2>&1; then
+  log "speed pack off: every step's default render, FAST=1 and FAST=0 in turn ($RUNS pairs)"
+  for s in $PRESENT_STEPS; do
+    pairs=$(for _ in $(seq "$RUNS"); do
+      a=$(ours "$s" -o "$B/pk.png"); b=$(BIN=$NF/bin ours "$s" -o "$B/pk.png"); echo "$a $b"
+    done)
+    m() { awk "{print $1}" <<<"$pairs" | stats | cut -d' ' -f1; }
+    echo "$s,$RUNS,$(m '$3'),$(m '$6'),$(m '$6 / $3')" >> "$D/pack-off.csv"
+  done
+else
+  log "speed pack off: the FAST=0 build failed ($B/nofast.log)"
 fi
 fi
 

@@ -1,40 +1,16 @@
 /* Film: linear float RGB pixels, the lecture's sample positions, export
  * (step 01). docs/01-film.md. */
-#define _DEFAULT_SOURCE /* madvise */
 #include "film.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
-#include <sys/mman.h>
-
-/* Zeroed floats for the film. A large film goes in 2 MB pages where the
- * kernel offers them (transparent huge pages): otherwise the first write to
- * each 4 KB page is a page fault, about 1 400 of them at 800x600, which cost
- * more than the 3 faults and the memset (docs/performance.md). */
-static float *pixels_alloc(size_t count)
-{
-  enum { HUGE_PAGE = 2 << 20 };
-  size_t bytes = count * sizeof(float);
-  if (bytes < HUGE_PAGE)
-    return calloc(count, sizeof(float));
-  size_t rounded = (bytes + HUGE_PAGE - 1) / HUGE_PAGE * HUGE_PAGE;
-  float *px = aligned_alloc(HUGE_PAGE, rounded);
-  if (!px)
-    return NULL;
-#ifdef MADV_HUGEPAGE
-  madvise(px, rounded, MADV_HUGEPAGE); /* a hint: failure changes nothing */
-#endif
-  memset(px, 0, bytes);
-  return px;
-}
 
 bool film_init(Film *film, int width, int height)
 {
   film->width = width;
   film->height = height;
-  film->rgb = pixels_alloc((size_t)width * height * 3);
+  film->rgb = calloc((size_t)width * height * 3, sizeof(float));
   if (!film->rgb) {
     fprintf(stderr, "film: out of memory for %dx%d pixels\n", width, height);
     film->width = film->height = 0;

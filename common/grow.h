@@ -1,19 +1,20 @@
 /* Arrays that grow by doubling, their capacity never stored: an array of n
  * elements has room for the power of two at or above n, and at least 4.
- * The scene's materials, lights, planes and instances (common/scene.c; the
- * instances aligned, grow_reserve_aligned) and the parser's pending
- * references (common/app/parser.c) grow this way. */
+ * The scene's materials, lights, planes and instances (common/scene.c) and
+ * the parser's pending references (common/app/parser_state.c) grow this way. */
 #ifndef RT_GROW_H
 #define RT_GROW_H
 
 #include <stdbool.h>
 #include <stdlib.h>
-#include <string.h>
 
 /* The room an array of `count` elements has. */
 static inline size_t grow_capacity(size_t count)
 {
-  return count <= 4 ? 4 : (size_t)1 << (64 - __builtin_clzll((unsigned long long)count - 1));
+  size_t room = 4;
+  while (room < count)
+    room *= 2;
+  return room;
 }
 
 /* Room for `more` elements after the `count` of *array (`size` bytes each);
@@ -26,24 +27,6 @@ static inline bool grow_reserve(void **array, size_t count, size_t more, size_t 
   void *bigger = realloc(*array, grow_capacity(need) * size);
   if (!bigger)
     return false;
-  *array = bigger;
-  return true;
-}
-
-/* grow_reserve for an array kept aligned to `align` bytes (a power of two
- * that divides the room of 4 elements): a new block, the elements copied. */
-static inline bool grow_reserve_aligned(void **array, size_t count, size_t more, size_t size,
-                                        size_t align)
-{
-  size_t need = count + more;
-  if (*array && need <= grow_capacity(count))
-    return true;
-  void *bigger = aligned_alloc(align, grow_capacity(need) * size);
-  if (!bigger)
-    return false;
-  if (*array)
-    memcpy(bigger, *array, count * size);
-  free(*array);
   *array = bigger;
   return true;
 }

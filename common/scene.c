@@ -19,15 +19,13 @@ void scene_init(Scene *scene)
               vec_make(0.0f, 1.0f, 0.0f), 45.0f, 1.0f, 800.0f / 600.0f);
 }
 
-_Static_assert(sizeof(Instance) == 32, "an instance is half a cache line");
-
 void scene_free(Scene *scene)
 {
   free(scene->materials);
   free(scene->lights);
-  for (int k = 0; k < scene->n_planes; k++)
-    free(scene->planes[k]);
-  free(scene->planes);
+  for (int k = 0; k < scene->n_kept; k++)
+    free(scene->kept[k]);
+  free(scene->kept);
   free(scene->instances);
   if (scene->index)
     scene->index->destroy(scene->index);
@@ -38,16 +36,6 @@ void scene_free(Scene *scene)
 static bool reserve(void **array, int count, int more, size_t size)
 {
   if (grow_reserve(array, (size_t)count, (size_t)more, size))
-    return true;
-  fprintf(stderr, "scene: out of memory\n");
-  return false;
-}
-
-/* Room for `more` instances after the scene's, the array kept aligned. */
-static bool reserve_instances(Scene *scene, int more)
-{
-  if (grow_reserve_aligned((void **)&scene->instances, (size_t)scene->n_instances, (size_t)more,
-                           sizeof(Instance), INSTANCE_ALIGN))
     return true;
   fprintf(stderr, "scene: out of memory\n");
   return false;
@@ -73,25 +61,30 @@ bool scene_add_light(Scene *scene, const Light *light)
   return push((void **)&scene->lights, &scene->n_lights, sizeof *light, light);
 }
 
-const Plane *scene_add_plane(Scene *scene, const Plane *plane)
+const void *scene_keep(Scene *scene, const void *shape, size_t size)
 {
-  Plane *copy = malloc(sizeof *copy);
+  void *copy = malloc(size);
   if (!copy) {
     fprintf(stderr, "scene: out of memory\n");
     return NULL;
   }
-  if (!reserve((void **)&scene->planes, scene->n_planes, 1, sizeof *scene->planes)) {
+  if (!reserve((void **)&scene->kept, scene->n_kept, 1, sizeof *scene->kept)) {
     free(copy);
     return NULL;
   }
-  *copy = *plane;
-  scene->planes[scene->n_planes++] = copy;
+  memcpy(copy, shape, size);
+  scene->kept[scene->n_kept++] = copy;
   return copy;
+}
+
+const Plane *scene_add_plane(Scene *scene, const Plane *plane)
+{
+  return scene_keep(scene, plane, sizeof *plane);
 }
 
 bool scene_add_instance(Scene *scene, const Instance *inst)
 {
-  if (!reserve_instances(scene, 1))
+  if (!reserve((void **)&scene->instances, scene->n_instances, 1, sizeof(Instance)))
     return false;
   scene->instances[scene->n_instances++] = *inst;
   if (inst->material >= 0)
@@ -144,7 +137,7 @@ static bool add_light_shapes(Scene *scene, unsigned features)
     } else {
       continue;
     }
-    if (!reserve_instances(scene, 1))
+    if (!reserve((void **)&scene->instances, scene->n_instances, 1, sizeof(Instance)))
       return false;
     scene->instances[scene->n_instances++] = inst;
   }
@@ -202,6 +195,7 @@ float scene_instance_hit_t(const Instance *inst, Ray r, float tmax)
   case SHAPE_SPHERE: return sphere_hit_t(&inst->sphere, r, tmax);
   case SHAPE_PLANE: return plane_hit_t(inst->plane, r, tmax);
   case SHAPE_QUAD: return quad_hit_t(inst->quad, r, tmax);
+  case SHAPE_DISC: return disc_hit_t(inst->disc, r, tmax);
   }
   return INFINITY;
 }
@@ -212,8 +206,20 @@ static void instance_hit_fill(const Instance *inst, Ray r, float t, Hit *hit)
   case SHAPE_SPHERE: sphere_hit_fill(&inst->sphere, r, t, hit); break;
   case SHAPE_PLANE: plane_hit_fill(inst->plane, r, t, hit); break;
   case SHAPE_QUAD: quad_hit_fill(inst->quad, r, t, hit); break;
+  case SHAPE_DISC: disc_hit_fill(inst->disc, r, t, hit); break;
   }
   hit->inst = inst;
+}
+
+const char *scene_shape_name(ShapeType shape)
+{
+  switch (shape) {
+  case SHAPE_SPHERE: return "sphere";
+  case SHAPE_PLANE: return "plane";
+  case SHAPE_QUAD: return "quad";
+  case SHAPE_DISC: return "disc";
+  }
+  return "?";
 }
 
 bool scene_intersect(const Scene *scene, Ray r, float tmax, Hit *hit)

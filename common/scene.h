@@ -7,30 +7,32 @@
 
 #include <stdbool.h>
 #include "camera.h"
+#include "disc.h"
 #include "light.h"
 #include "material.h"
 #include "plane.h"
 #include "quad.h"
 #include "sphere.h"
 
-typedef enum ShapeType { SHAPE_SPHERE, SHAPE_PLANE, SHAPE_QUAD } ShapeType;
+/* The kinds of shape an instance may be. Each has a case in scene.c's
+ * switches (scene_instance_hit_t, its hit_fill, scene_shape_name), which
+ * -Wswitch checks; docs/extending.md lists what a new one takes. */
+typedef enum ShapeType { SHAPE_SPHERE, SHAPE_PLANE, SHAPE_QUAD, SHAPE_DISC } ShapeType;
 
-/* 32 bytes, two to a cache line (the scene's array of them is aligned to
- * 64): a sphere is kept in place, the larger shapes where the scene keeps
- * them (a 10^6-sphere scene's instances take 32 MB instead of 64;
- * docs/reliability.md, "Twelfth pass"). */
+/* A shape paired with a material or a light. A sphere is kept in place; a
+ * larger shape where the scene keeps it (scene_keep), so that every instance
+ * stays as small as a sphere's. */
 typedef struct Instance {
   ShapeType shape;
   int material;         /* index into Scene.materials, or -1 for a light's shape */
   int light;            /* index into Scene.lights, or -1 for a lit object */
   union {
     Sphere sphere;      /* SHAPE_SPHERE */
-    const Plane *plane; /* SHAPE_PLANE: the scene's copy (scene_add_plane) */
+    const Plane *plane; /* SHAPE_PLANE: the scene's copy (scene_keep) */
     const Quad *quad;   /* SHAPE_QUAD: its area light's, Scene.lights[light].quad */
+    const Disc *disc;   /* SHAPE_DISC: the scene's copy (scene_keep) */
   };
 } Instance;
-
-enum { INSTANCE_ALIGN = 64 }; /* Scene.instances' alignment in bytes */
 
 /* What a step knows how to render; the rest of a scene is ignored (and said). */
 enum SceneFeature {
@@ -50,8 +52,8 @@ typedef struct SceneInfo {
 
 struct Scene;
 
-/* An acceleration structure over the instances (common/accel/ builds one).
- * It only chooses which instances a query tests; every test calls the
+/* An acceleration structure over the instances (pack_index, app/pack.h,
+ * builds one). It only chooses which instances a query tests; every test calls the
  * shape's own function (scene_instance_hit_t), so its answers are the plain
  * loop's: the closest hit keeps the first of equal distances in instance
  * order, as the loop does. */
@@ -77,10 +79,10 @@ typedef struct Scene {
   int n_materials;
   Light *lights;
   int n_lights;
-  Plane **planes;          /* the planes instances point to, each owned */
-  int n_planes;
-  Instance *instances;     /* lit shapes first, then the lights' shapes;
-                            * INSTANCE_ALIGN-byte aligned */
+  void **kept;             /* the shapes instances point to (scene_keep),
+                            * each owned */
+  int n_kept;
+  Instance *instances;     /* lit shapes first, then the lights' shapes */
   int n_instances;         /* all instances the camera sees */
   int n_shapes;            /* instances [0, n_shapes) have a material */
   SceneInfo info;          /* set by scene_prepare */
@@ -105,9 +107,17 @@ bool scene_add_material(Scene *scene, const Material *m);
 bool scene_add_light(Scene *scene, const Light *light);
 bool scene_add_instance(Scene *scene, const Instance *inst);
 
-/* A copy of the plane, kept by the scene until scene_free, for a
- * SHAPE_PLANE instance to point to; NULL when out of memory. */
+/* scene_keep for a plane (a SHAPE_PLANE instance's). */
 const Plane *scene_add_plane(Scene *scene, const Plane *plane);
+
+/* A copy of the `size` bytes of `shape` (a Plane, a Disc, ...), kept by the
+ * scene until scene_free, for an instance to point to; NULL when out of
+ * memory (one line printed). */
+const void *scene_keep(Scene *scene, const void *shape, size_t size);
+
+/* The shape's name, as the statement that makes it is written ("sphere");
+ * a quad is an area light's. */
+const char *scene_shape_name(ShapeType shape);
 
 /* Get the scene ready for a step that handles `features` (SceneFeature bits):
  * drop what it cannot render (recorded in info.ignored), order the instances,
@@ -131,7 +141,7 @@ bool scene_occluded(const Scene *scene, Ray r, float tmax);
 
 /* A copy of `scene` whose any-hit queries answer false (no_occluders set):
  * what a shading point sees when the renderer has proved that nothing lies
- * between it and a light (accel_shadow_view, common/accel/accel.h). */
+ * between it and a light (pack_light_view, app/pack.h). */
 Scene scene_view_unoccluded(const Scene *scene);
 
 /* The index of the material called `name`, or -1. */

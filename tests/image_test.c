@@ -45,7 +45,7 @@ static const struct {
     {"04-phong", "light_incident, shade_phong_light, shade_phong", "docs/04-phong.md"},
     {"05-shadows", "shade_visible, ray_spawn", "docs/05-shadows.md"},
     {"06-ambient", "shade_phong, shade_trace", "docs/06-ambient.md"},
-    {"07-antialiasing", "pixel, pixel_sampled, square_mean, trace_point",
+    {"07-antialiasing", "pixel, pixel_sampled, square_mean, point_colour",
      "docs/07-antialiasing.md"},
     {"08-area-lights", "shade_area, area_incident, light_pattern, shade_trace",
      "docs/08-area-lights.md"},

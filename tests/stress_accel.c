@@ -6,8 +6,8 @@
 #include "threads.h"
 #include <stdlib.h>
 
-#include "accel/accel.h"
-#include "accel/bvh.h"
+#include "index/accel.h"
+#include "index/bvh.h"
 #include "check.h"
 #include "rng.h"
 
@@ -69,7 +69,7 @@ static void check_answers(const Scene *ps, Rng *gen, const char *what, int rays)
   Rng g = *gen;
   int n = s.n_instances;
   cr_assert(s.index, "accel_build (given code) built no index");
-  Check c = CHECK("scene index (given code: common/accel/)",
+  Check c = CHECK("scene index (given code: fast/index/)",
                   "docs/performance.md, \"The scene queries\"");
   for (int k = 0; k < rays; k++) {
     Ray r = random_ray(&s, &g);
@@ -122,7 +122,7 @@ Test(accel, hierarchy_gives_the_plain_loops_answers)
 }
 
 /* Above 16384 spheres the hierarchy is built over Morton-ordered clusters
- * (common/accel/bvh.c), its sort split among the threads: the same answers
+ * (fast/index/bvh.c), its sort split among the threads: the same answers
  * with one thread and with three. */
 Test(accel, clustered_hierarchy_gives_the_plain_loops_answers)
 {
@@ -134,7 +134,7 @@ Test(accel, clustered_hierarchy_gives_the_plain_loops_answers)
 
 /* Scenes of more than 65536 instances are sorted in blocks, and when their
  * lit spheres are consecutive instances the index keeps no list of them
- * (common/accel/accel.c, sort_instances): the same answers with the spheres
+ * (fast/index/accel.c, sort_instances): the same answers with the spheres
  * before the floor, with the floor in their middle, and for a few spheres
  * after 70 000 planes (the cones' layout). */
 Test(accel, large_scenes_give_the_plain_loops_answers)
@@ -190,7 +190,7 @@ static Balls packed(const Ball *balls)
  * clustered one (40 000). */
 Test(accel, children_lie_in_order_along_their_axis)
 {
-  Check c = CHECK("bvh_build (given code: common/accel/bvh.c)",
+  Check c = CHECK("bvh_build (given code: fast/index/bvh.c)",
                   "docs/performance.md, \"The scene queries\"");
   for (int n = 3000; n <= 40000; n += 37000) {
     for (int flat = 0; flat < 2; flat++) {
@@ -269,7 +269,7 @@ static int walk(Check *c, const Bvh *bvh, const Ball *balls, int node, int depth
  * tree, byte for byte, built with 1 and with 3 threads. */
 Test(accel, every_slot_is_one_node_and_every_ball_in_one_leaf)
 {
-  Check c = CHECK("bvh_build (given code: common/accel/bvh.c)",
+  Check c = CHECK("bvh_build (given code: fast/index/bvh.c)",
                   "docs/performance.md, \"The scene queries\"");
   static const int sizes[] = {1000, 40000};
   for (int s = 0; s < 2; s++)
@@ -421,14 +421,14 @@ static void check_ray(Check *c, const Scene *s, Ray r, float tmax, bool closest,
 
 /* Up to 16 spheres the index chooses each camera ray's and shadow ray's
  * spheres from their cones seen from the eye and the point lights, and
- * their discs across the directional lights (common/accel/cones.c): the
+ * their discs across the directional lights (fast/index/cones.c): the
  * plain loop's answers for camera rays, the shadow rays spawned from their
  * hits, rays whose end strays from a light by 1e-8 to 1e-2 of its distance
  * (inside and outside the cones' margin), rays along the directional light
  * from anywhere, grazing rims, and an eye or a light inside a sphere. */
 Test(accel, cones_give_the_plain_loops_answers)
 {
-  Check c = CHECK("scene index (given code: common/accel/cones.c)",
+  Check c = CHECK("scene index (given code: fast/index/cones.c)",
                   "docs/performance.md, \"Cones from the eye and the lights\"");
   const int sizes[] = {1, 2, 5, 8, 9, 16};
   for (int variant = 0; variant < 4; variant++)

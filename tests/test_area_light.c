@@ -11,7 +11,8 @@
 #include <stdlib.h>
 #include <sys/stat.h>
 
-#include "accel/accel.h"
+#include "index/accel.h"
+#include "index/light_view.h"
 #include "app/image.h"
 #include "app/parser.h"
 #include "rng.h"
@@ -53,9 +54,11 @@ static const vec3s EYE = {.x = 0.0f, .y = 1.0f, .z = 5.0f};
 static double estimate(const Scene *s, const Hit *h, uint32_t seed, int n, int kind,
                        uint64_t *rays)
 {
-  RenderSettings set = {.seed = seed, .samples = 1, .light_samples = n, .sampler = kind};
+  RenderSettings set = {.seed = seed, .sampler = (SamplerKind)kind};
   RenderCtx ctx = {.set = &set, .pixel = 7, .sample = 0};
-  vec3s c = shade_phong(s, h, EYE, &ctx);
+  Scene with_n = *s; /* shade_phong takes scene->light_samples samples */
+  with_n.light_samples = n;
+  vec3s c = shade_phong(&with_n, h, EYE, &ctx);
   if (rays)
     *rays = ctx.rays;
   return c.x;
@@ -66,7 +69,7 @@ static double estimate(const Scene *s, const Hit *h, uint32_t seed, int n, int k
 static double area(const Scene *s, const Hit *h, uint32_t seed, int n, int kind,
                    uint32_t pixel, uint32_t sample, uint64_t *rays)
 {
-  RenderSettings set = {.seed = seed, .samples = 1, .light_samples = n, .sampler = kind};
+  RenderSettings set = {.seed = seed, .sampler = (SamplerKind)kind};
   RenderCtx ctx = {.set = &set, .pixel = pixel, .sample = sample};
   vec3s v = glms_vec3_normalize(glms_vec3_sub(EYE, h->p));
   double e = shade_area(s, 0, h, v, n, &ctx).x;
@@ -322,14 +325,14 @@ static bool random_shadow_ray(const Hit *h, const Quad *q, Rng *r, Ray *ray, flo
 Test(area_light, shadow_views_answer_every_shadow_ray_as_the_scene_does)
 {
   /* Random spheres over the floor; shading points on the floor and on the
-   * spheres. accel_shadow_view gives a view whose shadow queries test only
+   * spheres. light_view_make gives a view whose shadow queries test only
    * the shapes that may stand in the way (none: no ray at all). For 64
    * random shadow rays per point, scene_occluded on the view must answer as
    * on the whole scene (the ray code itself). Each kind of view must occur
    * often enough to matter. */
   Rng r = rng_make(7, 0, 0);
   int counts[3] = {0, 0, 0}; /* views with no shape, some shapes, the whole scene */
-  Check k = CHECK("accel_shadow_view, accel_quad_unoccluded", DOC_SKIP);
+  Check k = CHECK("light_view_make, accel_quad_unoccluded", DOC_SKIP);
   for (int scene_k = 0; scene_k < 20; scene_k++) {
     char text[1024];
     int len = snprintf(text, sizeof text,
@@ -351,9 +354,9 @@ Test(area_light, shadow_views_answer_every_shadow_ray_as_the_scene_does)
                                                    rng_float(&r) - 0.5f))};
       if (!scene_intersect(&s, cam, INFINITY, &h) || h.inst->light >= 0)
         continue;
-      AccelShadowView storage;
-      Scene view;
-      int n = accel_shadow_view(&s, &h, q, &storage, &view);
+      PackView pv;
+      int n = light_view_make(&s, &h, q, &pv);
+      const Scene *view = &pv.scene;
       counts[n == 0 ? 0 : n > 0 ? 1 : 2]++;
       CHECK_INT(&k, n == 0, accel_quad_unoccluded(&s, &h, q), "random scene %d, point (%g, %g, "
                 "%g): accel_quad_unoccluded against a view with no shape", scene_k, h.p.x,
@@ -363,7 +366,7 @@ Test(area_light, shadow_views_answer_every_shadow_ray_as_the_scene_does)
         Ray ray;
         float tmax;
         if (random_shadow_ray(&h, q, &r, &ray, &tmax))
-          differ += scene_occluded(&view, ray, tmax) != scene_occluded(&s, ray, tmax);
+          differ += scene_occluded(view, ray, tmax) != scene_occluded(&s, ray, tmax);
       }
       CHECK_INT(&k, 0, differ, "random scene %d, point (%g, %g, %g), a view testing %d shapes: "
                 "shadow rays of 64 answered otherwise than on the scene", scene_k, h.p.x, h.p.y,
@@ -490,7 +493,8 @@ Test(area_light, camera_sees_P_over_A_on_the_front_face_and_black_behind)
   /* 2 x 2 light at y = 3 facing down, power (6, 4, 2): L = P / 4. */
   Scene s;
   load(&s, "light area corner -1 3 -1 edge1 2 0 0 edge2 0 0 2 power 6 4 2");
-  RenderSettings set = {.seed = 1, .samples = 1, .light_samples = 4};
+  s.light_samples = 4;
+  RenderSettings set = {.seed = 1};
   RenderCtx ctx = {.set = &set};
   Check k = CHECK("shade_trace", "docs/08-area-lights.md, \"The light\"");
   Ray up = {.o = vec_make(0.3f, 1.0f, 0.2f), .d = vec_make(0.0f, 1.0f, 0.0f)};

@@ -19,7 +19,7 @@
 #define REL_ASAN 0
 #endif
 #define STATEMENTS "(film, camera, ambient, background, material, plane, sphere, " \
-                   "light, samples, light_samples)"
+                   "disc, light, samples, light_samples)"
 
 /* Write `head`, then `n` copies of `fill`, then `tail` to WORK/name. */
 static void generate(const char *name, const char *head, const char *fill, long n,

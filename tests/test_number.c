@@ -10,6 +10,7 @@
 #include <stdlib.h>
 
 #include "app/number.h"
+#include "reader/decimal.h"
 
 #define DOC "docs/scene-format.md, \"Numbers\""
 
@@ -169,18 +170,18 @@ Test(number, reads_only_the_bytes_it_is_given)
   CHECK_NEAR(&c, 8.0, v, 0.0, "\"0x1p3\": value");
 }
 
-/* number_prefix, as the parser's fast path calls it: on the scene text, which
+/* decimal_prefix, as the parser's fast path calls it: on the scene text, which
  * goes on after the word. Each random word is followed by a byte that ends
  * it (a space, a newline, '#') or may continue it ('.', 'e', a digit,
  * 'x'), then 20 more bytes (the reader looks at 8 bytes at a time), or in
  * every fifth word nothing more (it reads words of the form [-]D.F apart when
- * 12 bytes are left); where number_prefix reads a number, it must be
+ * 12 bytes are left); where decimal_prefix reads a number, it must be
  * number_parse's float for the bytes it read, and it must stop at the end of
  * a word the next byte ends. Plain decimals of fewer than 8 digits on each
  * side of the point, as scenes write them (%g, %.6f, %.6g), must be read. */
 Test(number, prefix_reads_as_number_parse_up_to_where_it_stops, .timeout = 60)
 {
-  Check c = CHECK("number_prefix", DOC);
+  Check c = CHECK("decimal_prefix", DOC);
   uint64_t s = 0x5851F42D4C957F2Dull;
   static const char after[] = " \n#.e5x";
   static const char *const odd[] = {".", "-", "+", "-.", "5.", ".5", "0.", "-0", "00000001.5",
@@ -207,7 +208,7 @@ Test(number, prefix_reads_as_number_parse_up_to_where_it_stops, .timeout = 60)
     for (int j = 1; j <= 20; j++) /* printable, or in a third of the words any byte */
       text[len + j] = (char)(k % 3 ? ' ' + next(&s) % 95 : 1 + next(&s) % 255);
     float got = 0.0f, want = 0.0f;
-    const char *stop = number_prefix(text, text + len + (k % 5 ? 21 : 1), &got);
+    const char *stop = decimal_prefix(text, text + len + (k % 5 ? 21 : 1), &got);
     bool ends = end == ' ' || end == '\n' || end == '#';
     if (!stop) {
       CHECK_THAT(&c, !(plain && ends), "'%s' then '%c': expected a number read, got none",

@@ -1,4 +1,4 @@
-/* The parse of a large scene in pieces at once (common/app/parser_load.c)
+/* The parse of a large scene in pieces at once (fast/reader/pieces.c)
  * against the one-piece parse: the same scene, or the same message, for
  * every scene file of the repository. docs/reliability.md, "Large scenes". */
 #define _DEFAULT_SOURCE /* mkstemp */
@@ -12,6 +12,8 @@
 
 #include "app/parser.h"
 #include "app/parser_state.h"
+#include "reader/pieces.h"
+#include "reader/sphere_line.h"
 
 /* Two instances with the same shape, compared by the union member it uses
  * (the rest of the union's bytes are unspecified after a member's store). */
@@ -22,8 +24,10 @@ static bool same_instance(const Instance *a, const Instance *b)
   switch (a->shape) {
   case SHAPE_SPHERE: return memcmp(&a->sphere, &b->sphere, sizeof a->sphere) == 0;
   case SHAPE_PLANE:  return memcmp(a->plane, b->plane, sizeof *a->plane) == 0;
-  default:           return memcmp(a->quad, b->quad, sizeof *a->quad) == 0;
+  case SHAPE_QUAD:   return memcmp(a->quad, b->quad, sizeof *a->quad) == 0;
+  case SHAPE_DISC:   return memcmp(a->disc, b->disc, sizeof *a->disc) == 0;
   }
+  return false;
 }
 
 static bool same_instances(const Instance *a, const Instance *b, int n)
@@ -59,7 +63,7 @@ static bool same_parse(bool ok_a, const char *err_a, const Scene *a, bool ok_b,
   return ok_a == ok_b && strcmp(err_a, err_b) == 0 && (!ok_a || same_scene(a, b));
 }
 
-/* What parser_load_chunks prints and builds for `text` in `chunks` pieces. */
+/* What pieces_load prints and builds for `text` in `chunks` pieces. */
 static bool parse_in_pieces(const char *text, size_t len, int chunks, Scene *s, char *err,
                             size_t size)
 {
@@ -67,7 +71,7 @@ static bool parse_in_pieces(const char *text, size_t len, int chunks, Scene *s, 
   cr_assert(tmp);
   capture_begin(tmp);
   scene_init(s);
-  bool ok = parser_load_chunks("t.scene", text, len, s, chunks);
+  bool ok = pieces_load("t.scene", text, len, s, chunks);
   capture_end();
   rewind(tmp);
   err[fread(err, 1, size - 1, tmp)] = '\0';
@@ -82,7 +86,7 @@ static bool parse_in_pieces(const char *text, size_t len, int chunks, Scene *s, 
 Test(parse_pieces, pieces_in_parallel_parse_as_the_whole)
 {
   static const char *const dirs[] = {"scenes", "tests/bad/scenes"};
-  Check c = CHECK("parser_load_chunks", "docs/reliability.md, \"Large scenes\"");
+  Check c = CHECK("pieces_load", "docs/reliability.md, \"Large scenes\"");
   for (int d = 0; d < 2; d++) {
     DIR *dir = opendir(dirs[d]);
     cr_assert(dir, "no %s", dirs[d]);
@@ -99,15 +103,15 @@ Test(parse_pieces, pieces_in_parallel_parse_as_the_whole)
       Scene whole, pieces;
       bool ok = parse_in_pieces(text, len, 1, &whole, whole_err, sizeof whole_err);
       for (int chunks = 2; chunks <= 9; chunks++) {
-        int reparses = parser_reparses;
+        int reparses = pieces_reparses;
         bool ok_p = parse_in_pieces(text, len, chunks, &pieces, piece_err, sizeof piece_err);
         CHECK_THAT(&c, same_parse(ok, whole_err, &whole, ok_p, piece_err, &pieces),
                    "%.100s in %d pieces: expected %s%.200s, got %s%.200s", path, chunks,
                    ok ? "the whole parse's scene" : "the whole parse's error: ", whole_err,
                    ok_p ? (ok ? "a different scene" : "a scene") : "", piece_err);
-        CHECK_THAT(&c, !ok || parser_reparses == reparses,
+        CHECK_THAT(&c, !ok || pieces_reparses == reparses,
                    "%.100s in %d pieces: a valid scene, expected the pieces to parse it "
-                   "(parser_reparses unchanged), got it parsed again whole", path, chunks);
+                   "(pieces_reparses unchanged), got it parsed again whole", path, chunks);
         scene_free(&pieces);
       }
       scene_free(&whole);
@@ -148,13 +152,13 @@ static void forward_references(Check *c, bool undefined)
                "forward references, whole: shape %d: expected material %d, got %d", k, k % 7,
                whole.instances[k].material);
   for (int chunks = 2; chunks <= 9; chunks++) {
-    int reparses = parser_reparses;
+    int reparses = pieces_reparses;
     bool ok_p = parse_in_pieces(text, len, chunks, &pieces, piece_err, sizeof piece_err);
     CHECK_THAT(c, same_parse(ok, whole_err, &whole, ok_p, piece_err, &pieces),
                "forward references in %d pieces: expected %s%.200s, got %s%.200s", chunks,
                ok ? "the whole parse's scene" : "the whole parse's error: ", whole_err,
                ok_p ? (ok ? "a different scene" : "a scene") : "", piece_err);
-    CHECK_THAT(c, !ok || parser_reparses == reparses,
+    CHECK_THAT(c, !ok || pieces_reparses == reparses,
                "forward references in %d pieces: a valid scene, expected the pieces to "
                "parse it, got it parsed again whole", chunks);
     if (ok_p)
@@ -166,7 +170,7 @@ static void forward_references(Check *c, bool undefined)
 
 Test(parse_pieces, forward_references_resolve_as_in_the_whole)
 {
-  Check c = CHECK("parser_load_chunks", "docs/reliability.md, \"Large scenes\"");
+  Check c = CHECK("pieces_load", "docs/reliability.md, \"Large scenes\"");
   forward_references(&c, false);
   forward_references(&c, true);
   CHECK_DONE(&c);
@@ -178,7 +182,7 @@ Test(parse_pieces, forward_references_resolve_as_in_the_whole)
  * parses in 2 to 9 pieces as whole, and never again whole. */
 Test(parse_pieces, shapes_fit_their_pieces_room)
 {
-  Check c = CHECK("parser_load_chunks", "docs/reliability.md, \"Large scenes\"");
+  Check c = CHECK("pieces_load", "docs/reliability.md, \"Large scenes\"");
   static char text[1 << 16];
   size_t len = (size_t)snprintf(text, sizeof text, "material m diffuse 1 1 1\n");
   for (int k = 0; k < 400; k++)
@@ -188,13 +192,13 @@ Test(parse_pieces, shapes_fit_their_pieces_room)
   Scene whole, pieces;
   cr_assert(parse_in_pieces(text, len, 1, &whole, whole_err, sizeof whole_err), "%s", whole_err);
   for (int chunks = 2; chunks <= 9; chunks++) {
-    int reparses = parser_reparses;
+    int reparses = pieces_reparses;
     bool ok_p = parse_in_pieces(text, len, chunks, &pieces, piece_err, sizeof piece_err);
-    CHECK_THAT(&c, ok_p && same_scene(&whole, &pieces) && parser_reparses == reparses,
+    CHECK_THAT(&c, ok_p && same_scene(&whole, &pieces) && pieces_reparses == reparses,
                "400 shapes, the last line without a newline, in %d pieces: expected the "
                "whole parse's scene from the pieces, got %s%s", chunks,
                !ok_p ? "an error" : same_scene(&whole, &pieces) ? "it" : "another scene",
-               parser_reparses == reparses ? "" : " only from parsing again whole");
+               pieces_reparses == reparses ? "" : " only from parsing again whole");
     if (ok_p)
       scene_free(&pieces);
   }
@@ -232,17 +236,17 @@ static void header_and_spheres(Check *c, bool own_materials)
   Scene whole, pieces;
   cr_assert(parse_in_pieces(text, len, 1, &whole, whole_err, sizeof whole_err), "%s", whole_err);
   for (int chunks = 2; chunks <= 9; chunks++) {
-    int reparses = parser_reparses, pending = parser_pieces_pending;
+    int reparses = pieces_reparses, pending = pieces_pending;
     bool ok_p = parse_in_pieces(text, len, chunks, &pieces, piece_err, sizeof piece_err);
-    CHECK_THAT(c, ok_p && same_scene(&whole, &pieces) && parser_reparses == reparses,
+    CHECK_THAT(c, ok_p && same_scene(&whole, &pieces) && pieces_reparses == reparses,
                "a header and 3000 spheres%s, in %d pieces: expected the whole parse's scene "
                "from the pieces, got %s%s", own_materials ? " (pieces define materials)" : "",
                chunks, !ok_p ? "an error" : same_scene(&whole, &pieces) ? "it" : "another scene",
-               parser_reparses == reparses ? "" : " only from parsing again whole");
-    CHECK_THAT(c, own_materials || parser_pieces_pending == pending,
+               pieces_reparses == reparses ? "" : " only from parsing again whole");
+    CHECK_THAT(c, own_materials || pieces_pending == pending,
                "3000 spheres naming the header's materials, in %d pieces: expected 0 "
                "references left pending by the pieces (each given the header's materials), "
-               "got %d", chunks, parser_pieces_pending - pending);
+               "got %d", chunks, pieces_pending - pending);
     if (ok_p)
       scene_free(&pieces);
   }
@@ -251,7 +255,7 @@ static void header_and_spheres(Check *c, bool own_materials)
 
 Test(parse_pieces, header_materials_reach_every_piece)
 {
-  Check c = CHECK("parser_load_chunks", "docs/reliability.md, \"Large scenes\"");
+  Check c = CHECK("pieces_load", "docs/reliability.md, \"Large scenes\"");
   header_and_spheres(&c, false);
   header_and_spheres(&c, true);
   CHECK_DONE(&c);
@@ -379,7 +383,7 @@ static size_t sphere_variant(uint64_t *s, char *out, size_t size)
   return len;
 }
 
-/* `text` parsed with sphere_line (parser_fast_lines) in `pieces` pieces and
+/* `text` parsed with sphere_line (sphere_line_on) in `pieces` pieces and
  * by the general path whole: one check that they give the same scene or
  * the same message (`what` names the text). Whether the general path read
  * a scene. */
@@ -388,11 +392,11 @@ static bool fast_as_general(Check *c, const char *text, size_t len, int pieces,
 {
   char err_f[512], err_g[512];
   Scene a, b;
-  parser_fast_lines = true;
+  sphere_line_on = true;
   bool ok_f = parse_in_pieces(text, len, pieces, &a, err_f, sizeof err_f);
-  parser_fast_lines = false;
+  sphere_line_on = false;
   bool ok_g = parse_in_pieces(text, len, 1, &b, err_g, sizeof err_g);
-  parser_fast_lines = true;
+  sphere_line_on = true;
   CHECK_THAT(c, same_parse(ok_g, err_g, &b, ok_f, err_f, &a),
              "%s:\n  expected (general path) %s%.200s\n  got (fast path)      %s%.200s", what,
              ok_g ? "a scene" : "the error ", err_g,
@@ -405,7 +409,7 @@ static bool fast_as_general(Check *c, const char *text, size_t len, int pieces,
 }
 
 /* The sphere lines that parser_statements reads straight from the text
- * (sphere_line) against the general path (parser_fast_lines off): 20000
+ * (sphere_line) against the general path (sphere_line_on off): 20000
  * lines, each alone between a material defined before and one defined
  * after, with and without a final newline; the same scene, or the same
  * message. */
@@ -428,7 +432,7 @@ Test(parse_pieces, sphere_lines_read_fast_parse_as_the_general_path, .timeout = 
              newline ? " and a newline" : "");
     good += fast_as_general(&c, text, len, 1, what);
   }
-  parser_fast_lines = true;
+  sphere_line_on = true;
   CHECK_THAT(&c, good > 5000 && good < 18000, "expected both good and bad lines among the "
              "20000, found %d good", good);
   CHECK_DONE(&c);
@@ -484,7 +488,7 @@ Test(parse_pieces, sphere_lines_naming_many_materials_parse_as_the_general_path,
     snprintf(what, sizeof what, "text %d (%d sphere lines, %d pieces)", k, lines, 1 + k % 3);
     good += fast_as_general(&c, text, len, 1 + k % 3, what);
   }
-  parser_fast_lines = true;
+  sphere_line_on = true;
   CHECK_THAT(&c, good > 900 && good < 1400, "expected both good and bad texts among the "
              "1500, found %d good", good);
   CHECK_DONE(&c);

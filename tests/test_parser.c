@@ -205,7 +205,7 @@ static void expect_errors(const Bad *bad, size_t n, const char *doc)
   } while (0)
 
 #define STATEMENTS "(film, camera, ambient, background, material, plane, sphere, " \
-                   "light, samples, light_samples)"
+                   "disc, light, samples, light_samples)"
 
 Test(parser, unknown_words_suggest_the_nearest)
 {

@@ -1,4 +1,4 @@
-/* Tests of --trace and --aov (common/app/trace.c, aov.c) through the step
+/* Tests of --trace and --aov (common/app/trace_pixel.c, aov.c) through the step
  * binaries: the traced pixel is the rendered pixel, the terms add up to it,
  * the pictures of quantities match what the steps draw. They test the
  * tracer, whatever the steps' code: they pass in the starter too.
@@ -10,7 +10,7 @@
 #include <sys/wait.h>
 
 #include "app/image.h"
-#include "app/trace.h"
+#include "app/trace_line.h"
 
 #define BIN BUILD_DIR "/bin/"
 #define OUT BUILD_DIR "/test-out/trace-"

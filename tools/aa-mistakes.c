@@ -24,7 +24,7 @@ static vec3s pixel_same_numbers(const Scene *scene, const Film *film, int i, int
   for (int k = 0; k < scene->samples; k++) {
     ctx->sample = (uint32_t)k;
     ctx->samples++;
-    vec2s s = sampler_get((SamplerKind)set->sampler, set->seed, 0, (uint32_t)k,
+    vec2s s = sampler_get(set->sampler, set->seed, 0, (uint32_t)k,
                           (uint32_t)scene->samples);
     Ray r = camera_ray(&scene->camera, ((float)i + s.x) / (float)film->width,
                        ((float)j + s.y) / (float)film->height);

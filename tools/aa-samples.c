@@ -9,7 +9,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "accel/accel.h"
+#include "index/accel.h"
 #include "app/app.h"
 #include "app/image.h"
 #include "app/parser.h"
@@ -18,7 +18,7 @@
 
 /* The step's main.c below calls render_point: it calls this instead, which
  * counts the point and calls render_point. */
-static vec3s counting_point(const Scene *scene, RenderCtx *ctx, RenderPointFn trace,
+static vec3s counting_point(const Scene *scene, RenderCtx *ctx, RenderPointFn colour,
                             uint32_t x, uint32_t y);
 #define render_point counting_point
 #define main step07_main
@@ -49,11 +49,11 @@ static void count(uint32_t x, uint32_t y)
     counts[j * film_w + i]++;
 }
 
-static vec3s counting_point(const Scene *scene, RenderCtx *ctx, RenderPointFn trace,
+static vec3s counting_point(const Scene *scene, RenderCtx *ctx, RenderPointFn colour,
                             uint32_t x, uint32_t y)
 {
   count(x, y);
-  return render_point(scene, ctx, trace, x, y);
+  return render_point(scene, ctx, colour, x, y);
 }
 
 /* Dark blue at 2 samples, through red and yellow, to white at `top`. */
@@ -83,8 +83,8 @@ int main(int argc, char **argv)
                                  SCENE_LIGHT_SHAPES | SCENE_SAMPLES) ||
       !accel_build(&scene))
     return 1;
-  RenderSettings set = {.threads = 1, .seed = 1, .samples = scene.samples,
-                        .sampler = SAMPLER_SOBOL, .adaptive = strtof(argv[4], NULL)};
+  RenderSettings set = {.threads = 1, .seed = 1, .sampler = SAMPLER_SOBOL,
+                        .adaptive = strtof(argv[4], NULL)};
   Film film;
   seen = calloc((size_t)1 << SEEN_BITS, sizeof *seen);
   counts = calloc((size_t)film_w * (size_t)film_h, sizeof *counts);

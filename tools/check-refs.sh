@@ -34,7 +34,7 @@ md && /^[ \t]*```/ { fence = !fence; next }
 # to the doc it writes).
 {
   line = $0
-  while (match(line, /(docs|common|steps|tests|tools|bench|scenes|images|mk)\/[A-Za-z0-9_.\/+-]*/)) {
+  while (match(line, /(docs|common|fast|steps|tests|tools|bench|scenes|images|mk)\/[A-Za-z0-9_.\/+-]*/)) {
     pre = RSTART > 1 ? substr(line, RSTART - 1, 1) : ""
     pre2 = RSTART > 2 ? substr(line, RSTART - 2, 2) : ""
     tok = substr(line, RSTART, RLENGTH); nextc = substr(line, RSTART + RLENGTH, 1)

@@ -15,7 +15,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "app/trace.h"
+#include "app/trace_line.h"
 
 enum { ARGS_MAX = 64, TEXT = 1024 };
 

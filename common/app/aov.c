@@ -1,15 +1,24 @@
 /* --aov NAME (common/app/aov.h): the step's pixel function renders every
- * pixel as usual, with a recorder per thread (common/app/trace.c) that sums
- * the quantity over the pixel's camera samples. README.md, "For students". */
+ * pixel as usual, with a recorder per thread (common/app/trace_record.c) that
+ * sums the quantity over the pixel's camera samples. README.md, "For
+ * students". */
 #include "app/aov.h"
 
 #include <stdlib.h>
 #include <string.h>
 
-#include "app/trace_state.h"
+#include "app/trace_index.h"
 
-static const char *const NAMES[AOV_COUNT] = {"normal", "depth", "albedo", "ambient",
-                                             "diffuse", "specular", "shadow", "samples"};
+static const char *const NAMES[] = {
+    [AOV_NORMAL] = "normal",     [AOV_DEPTH] = "depth",       [AOV_ALBEDO] = "albedo",
+    [AOV_AMBIENT] = "ambient",   [AOV_DIFFUSE] = "diffuse",   [AOV_SPECULAR] = "specular",
+    [AOV_SHADOW] = "shadow",     [AOV_SAMPLES] = "samples"};
+_Static_assert(sizeof NAMES / sizeof *NAMES == AOV_COUNT, "NAMES: one name per AovKind");
+/* The Phong terms' AOVs are in TraceTerm's order (aov_term). */
+_Static_assert(AOV_AMBIENT + TERM_DIFFUSE == AOV_DIFFUSE &&
+                   AOV_AMBIENT + TERM_SPECULAR == AOV_SPECULAR &&
+                   AOV_SPECULAR - AOV_AMBIENT + 1 == TERM_COUNT,
+               "AovKind: ambient, diffuse, specular in TraceTerm's order");
 
 bool aov_parse(const char *name, AovKind *out)
 {
@@ -31,27 +40,6 @@ int aov_term(int aov)
   return aov >= AOV_AMBIENT && aov <= AOV_SPECULAR ? aov - AOV_AMBIENT : -1;
 }
 
-void aov_camera_hit(Trace *t, const TraceEvent *hit)
-{
-  vec3s v = glms_vec3_zero();
-  switch ((AovKind)t->aov) {
-  case AOV_DEPTH: /* the mean over the samples that hit */
-    if (hit)
-      film_accum_add(&t->sum, glms_vec3_broadcast(hit->t));
-    return;
-  case AOV_NORMAL:
-    if (hit)
-      v = glms_vec3_scale(glms_vec3_adds(hit->n, 1.0f), 0.5f);
-    break;
-  case AOV_ALBEDO:
-    if (hit && hit->inst->material >= 0)
-      v = t->plain.materials[hit->inst->material].diffuse;
-    break;
-  default: return;
-  }
-  film_accum_add(&t->sum, v);
-}
-
 /* The pixel as usual, through the recorder; its value is the quantity. */
 static vec3s aov_pixel(const Scene *scene, const Film *film, int i, int j, RenderCtx *ctx)
 {
@@ -66,7 +54,10 @@ static vec3s aov_pixel(const Scene *scene, const Film *film, int i, int j, Rende
     return glms_vec3_broadcast(t->shadow_rays ? (float)t->shadow_clear / (float)t->shadow_rays
                                               : 1.0f);
   case AOV_SAMPLES: return glms_vec3_broadcast((float)t->camera_rays);
-  default: return t->sum.n ? film_accum_mean(&t->sum) : glms_vec3_zero();
+  case AOV_NORMAL: return film_accum_mean(&t->normal);
+  case AOV_DEPTH: return film_accum_mean(&t->depth);
+  case AOV_ALBEDO: return film_accum_mean(&t->albedo);
+  default: return glms_vec3_zero(); /* the Phong terms: rendered without a recorder */
   }
 }
 
@@ -97,7 +88,7 @@ static Trace **recorders(const Scene *scene, RenderPixelFn pixel, AovKind aov, i
 }
 
 /* The Phong terms: the whole picture rendered on materials that keep one
- * term (trace.c's masked scene), the background black. */
+ * term (the recorder's masked scene), the background black. */
 bool aov_render(const Scene *scene, RenderPixelFn pixel, const RenderSettings *set,
                 AovKind aov, Film *film, RenderStats *stats)
 {

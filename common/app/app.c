@@ -6,12 +6,12 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "accel/accel.h"
+#include "app/pack.h"
 #include "app/aov.h"
 #include "app/cli.h"
 #include "app/image.h"
 #include "app/parser.h"
-#include "app/trace.h"
+#include "app/trace_pixel.h"
 #include "sampler.h"
 
 /* Say once what the step leaves out of this scene or command line. */
@@ -114,13 +114,7 @@ static int run_trace(int argc, char **argv, const Step *step, const Options *o,
   return o->trace_x < scene->width && o->trace_y < scene->height ? 1 : 2;
 }
 
-enum { FREE_BESIDE_FROM = 65536 }; /* instances: a scene this large is freed beside the save */
-
-/* Render the picture, or with --aov the quantity, and save it to `out`. The
- * scene is not needed past the render: a large one is freed on another
- * thread while this one saves the picture (10^6 spheres: about 10 ms of
- * unmapping that one thread did after the save; docs/reliability.md,
- * "Eighth pass"). */
+/* Render the picture, or with --aov the quantity, and save it to `out`. */
 static bool render_and_save(const Step *step, const Options *o, Scene *scene,
                             const RenderSettings *set, Film *film, const char *out)
 {
@@ -135,21 +129,9 @@ static bool render_and_save(const Step *step, const Options *o, Scene *scene,
       aov_for_bytes((AovKind)o->aov, scene->samples, film);
     tm = TONEMAP_CLAMP;
   }
-  int samples = scene->samples;
-  bool saved = false;
-  if (scene->n_instances >= FREE_BESIDE_FROM && omp_get_max_threads() > 1) {
-#pragma omp parallel sections
-    {
-#pragma omp section
-      saved = image_save(out, film->width, film->height, film->rgb, tm);
-#pragma omp section
-      scene_free(scene);
-    }
-  } else { /* not inside a region of one thread: the PNG's bands would get threads of their own */
-    saved = image_save(out, film->width, film->height, film->rgb, tm);
-  }
+  bool saved = image_save(out, film->width, film->height, film->rgb, tm);
   if (saved && !o->quiet)
-    summary(step, out, film, samples, &st);
+    summary(step, out, film, scene->samples, &st);
   return saved;
 }
 
@@ -184,15 +166,14 @@ int app_run(int argc, char **argv, const Step *step)
     return 2;
   }
   say_ignored(step, &o, 0);
-  if (!scene_prepare(&scene, step->features) || !accel_build(&scene)) {
+  if (!scene_prepare(&scene, step->features) || !pack_index(&scene)) {
     scene_free(&scene);
     return 1;
   }
   say_ignored(step, &(Options){.seed = 1, .adaptive = -1.0f}, scene.info.ignored);
   SamplerKind kind = SAMPLER_CENTER;
   sampler_parse(o.sampler ? o.sampler : step->sampler ? step->sampler : "center", &kind);
-  RenderSettings set = {.threads = o.threads, .seed = o.seed, .samples = scene.samples,
-                        .light_samples = scene.light_samples, .sampler = (int)kind,
+  RenderSettings set = {.threads = o.threads, .seed = o.seed, .sampler = kind,
                         .adaptive = o.adaptive >= 0.0f ? o.adaptive : step->adaptive,
                         .progress = !o.quiet};
   if (o.trace_x >= 0) {

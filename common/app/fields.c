@@ -6,7 +6,6 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "app/bounds.h"
 #include "app/number.h"
 #include "material.h"
 
@@ -36,7 +35,7 @@ static bool values_fast(const Lexer *lx, KeyKind kind, vec3s *v)
     if (number_parse(t->s, t->len, &v->raw[k]) != NUMBER_OK ||
         (kind == KEY_COLOR && !(v->raw[k] >= 0.0f && v->raw[k] <= LEXER_MAX_COLOR)) ||
         (kind == KEY_POWER && !(v->raw[k] >= 0.0f && v->raw[k] <= LEXER_MAX_POWER)) ||
-        (kind == KEY_POINT && !bounds_coordinate_ok(v->raw[k])))
+        (kind == KEY_POINT && !fields_coordinate_ok(v->raw[k])))
       return false;
   }
   return true;
@@ -61,7 +60,7 @@ static bool values_slow(Lexer *lx, const Key *key, vec3s *v)
     int col = lx->pos < lx->n ? lx->tok[lx->pos].col : lx->end_col;
     if (!lexer_number(lx, what, false, &v->raw[k]))
       return false;
-    if (key->kind == KEY_POINT && !bounds_coordinate_ok(v->raw[k]))
+    if (key->kind == KEY_POINT && !fields_coordinate_ok(v->raw[k]))
       return lexer_fail(lx, col, "expected a coordinate from -1e18 to 1e18 after '%s' "
                         "(squares and differences must fit in a float), found '%.*s'",
                         key->name, lx->tok[lx->pos - 1].len, lx->tok[lx->pos - 1].s);

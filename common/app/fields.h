@@ -4,6 +4,8 @@
 #ifndef RT_FIELDS_H
 #define RT_FIELDS_H
 
+#include <math.h>
+
 #include "app/lexer.h"
 
 typedef enum KeyKind {
@@ -30,6 +32,12 @@ typedef struct Field {
 } Field;
 
 enum { FIELDS_MAX = 6 };
+
+/* A coordinate a KEY_POINT may hold: |v| <= LEXER_MAX_COORD (not NaN). */
+static inline bool fields_coordinate_ok(float v)
+{
+  return fabsf(v) <= LEXER_MAX_COORD;
+}
 
 /* Read the rest of the line as keyword lists of `keys` into `fields` (same
  * order); each keyword at most once, required ones present. `what` names the

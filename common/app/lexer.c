@@ -4,7 +4,6 @@
 #include "app/lexer.h"
 
 #include <stdarg.h>
-#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -108,25 +107,9 @@ static bool space_byte(unsigned char c)
   return c == ' ' || c == '\t' || c == '\r';
 }
 
-/* The first byte at or after s, before stop, that is not a word byte: 8
- * bytes at a time where 8 remain (a byte loop pays a mispredicted branch at
- * the end of every word: the one-thread parse of 10^6 spheres took 0.227 s
- * with it, 0.194 s with this). In each 8-byte word, a byte below 0x21
- * (with its top bit clear), '#' or 127 sets its top bit in `end`; the lowest
- * set bit is exact (the borrows of these tests only reach higher bytes). */
+/* The first byte at or after s, before stop, that is not a word byte. */
 static const char *skip_word(const char *s, const char *stop)
 {
-  const uint64_t ones = 0x0101010101010101u, high = 0x8080808080808080u;
-  bool little = __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__; /* byte k = bits 8k.. */
-  for (; little && stop - s >= 8; s += 8) {
-    uint64_t x;
-    memcpy(&x, s, sizeof x);
-    uint64_t hash = x ^ (ones * '#'), del = x ^ (ones * 127);
-    uint64_t end = ((x - ones * 0x21) & ~x) | ((hash - ones) & ~hash) | ((del - ones) & ~del);
-    end &= high;
-    if (end)
-      return s + __builtin_ctzll(end) / 8;
-  }
   while (s < stop && word_byte((unsigned char)*s))
     s++;
   return s;

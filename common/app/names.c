@@ -28,11 +28,12 @@ static uint64_t key_of(const char *s, int len)
   return h;
 }
 
-/* The first slot to look at for a key: the top bits of its product with
- * 2^64 / golden ratio (Fibonacci hashing: every bit of the key moves them). */
+/* The first slot to look at for a key: the top half of its product with
+ * 2^64 / golden ratio (Fibonacci hashing: every bit of the key moves it),
+ * taken modulo the table's size. */
 static size_t home(const Names *t, uint64_t key)
 {
-  return (size_t)((key * 0x9E3779B97F4A7C15ull) >> (64 - __builtin_ctzll(t->cap)));
+  return (size_t)((key * 0x9E3779B97F4A7C15ull) >> 32) & (t->cap - 1);
 }
 
 void names_init(Names *t)

@@ -1,10 +1,10 @@
-/* The parser's state, shared by common/app/parser.c (the statements) and
- * common/app/parser_load.c (whole texts, in parallel chunks when large).
+/* The parser's state and statements (common/app/parser_state.c), for whole
+ * texts (common/app/parser.c) and the pieces of a large one
+ * (fast/reader/pieces.c).
  * Internal to the parser; docs/scene-format.md. */
 #ifndef RT_PARSER_STATE_H
 #define RT_PARSER_STATE_H
 
-#include <stdint.h>
 
 #include "app/lexer.h"
 #include "app/names.h"
@@ -26,15 +26,6 @@ typedef struct ForwardName {
   char name[MATERIAL_NAME_MAX];
 } ForwardName;
 
-/* A material name a sphere line found (common/app/parser.c, sphere_line):
- * its bytes as two words, zero past its length (at most 16 bytes). */
-typedef struct RecentName {
-  uint64_t w[2];
-  int len, material;
-} RecentName;
-
-enum { RECENT_NAMES = 8 };
-
 typedef struct Parser {
   Lexer lx;
   Scene *scene;
@@ -46,10 +37,8 @@ typedef struct Parser {
   Names forward_names;  /* name -> index into forward */
   int once_line[ONCE_COUNT]; /* where each once-statement was, 0: not yet */
   int room; /* 0: shapes go to the scene's growing array; > 0: a piece of a
-             * large text (parser_load.c), whose shapes go in place to
+             * large text (fast/reader/pieces.c), whose shapes go in place to
              * scene->instances[0 .. room), an array it does not own */
-  RecentName recent[RECENT_NAMES]; /* the last names sphere_line found */
-  unsigned n_recent;                /* how many it added, the oldest replaced */
 } Parser;
 
 /* The scene's materials as records of the names table. */
@@ -74,36 +63,16 @@ bool parser_pending_add(Parser *p, int instance, int line, int col, const char *
  * memory. */
 bool parser_pending_merge(Parser *p, const Parser *q, int first_instance);
 
-/* Whether parser_statements reads the common sphere line straight from the
- * text (common/app/parser.c, sphere_line; true). The tests turn it off to
- * compare with the general path. */
-extern bool parser_fast_lines;
-
-/* How many times parser_load_chunks has parsed a text again whole after its
- * pieces failed: on an error, which the whole parse then prints, and never
- * for a valid scene (the tests check; a miscounted piece's room would show
- * there and nowhere else, as a parse twice as slow). */
-extern int parser_reparses;
-
-/* References to materials that the pieces of parser_load_chunks left to
- * resolve after parsing, summed over every call: none to the materials of
- * the lines before the first sphere, which every piece is given (the tests
- * check; without them, the second half of a large scene would only parse
- * slower). */
-extern int parser_pieces_pending;
+/* Add a lit instance whose material, the name token `name`, is
+ * inst->material (-1: not defined yet, resolved at the end). A piece writes
+ * in place, and fails (silently: the whole text is then parsed again) should
+ * it find more shapes than its room, one a line. */
+bool parser_place_shape(Parser *p, Instance *inst, const Token *name);
 
 /* Resolve p->pending; false (printed) at the first undefined name. */
 bool parser_resolve(Parser *p);
 
 /* Free the parser's own memory (not the scene). */
 void parser_end(Parser *p);
-
-/* parser_load_text cut into `chunks` pieces at line starts, parsed at once
- * (OpenMP) and merged; any error, in a piece or between pieces (a second
- * `film`, a material defined twice, a name left undefined), and the text is
- * parsed again whole, which prints the error as usual. Exposed for the tests,
- * which compare it with the one-piece parse on every case. */
-bool parser_load_chunks(const char *file, const char *text, size_t len, Scene *scene,
-                        int chunks);
 
 #endif

@@ -53,19 +53,18 @@ void render(const Scene *scene, Film *film, RenderPixelFn pixel,
   int tiles_x = (film->width + TILE - 1) / TILE;
   int tiles = tiles_x * ((film->height + TILE - 1) / TILE);
   bool progress = set->progress && isatty(STDERR_FILENO);
-  /* One cache line per thread (RenderCtx is 64 bytes): the counters every ray
-   * increments never share a line between threads. */
-  _Alignas(64) RenderCtx ctx[RENDER_MAX_THREADS] = {{0}};
   int done = 0;
   double t0 = omp_get_wtime();
+  stats->rays = stats->samples = 0;
 #pragma omp parallel num_threads(threads)
   {
-    RenderCtx *mine = &ctx[omp_get_thread_num()];
-    mine->set = set;
-    mine->trace = set->traces ? set->traces[omp_get_thread_num()] : NULL;
+    /* Each thread's own context, on its own stack: the counters every ray
+     * increments are never shared between threads. */
+    RenderCtx mine = {.set = set,
+                      .trace = set->traces ? set->traces[omp_get_thread_num()] : NULL};
 #pragma omp for schedule(dynamic, 1)
     for (int tile = 0; tile < tiles; tile++) {
-      render_tile(scene, film, pixel, tile, tiles_x, mine);
+      render_tile(scene, film, pixel, tile, tiles_x, &mine);
       if (progress) {
         int now;
 #pragma omp atomic capture
@@ -76,14 +75,13 @@ void render(const Scene *scene, Film *film, RenderPixelFn pixel,
         }
       }
     }
+    free(mine.memo);
+#pragma omp critical(stats)
+    {
+      stats->rays += mine.rays;
+      stats->samples += mine.samples;
+    }
   }
   stats->seconds = omp_get_wtime() - t0;
-  for (int k = 0; k < threads; k++)
-    free(ctx[k].memo);
   stats->threads = threads;
-  stats->rays = stats->samples = 0;
-  for (int k = 0; k < threads; k++) {
-    stats->rays += ctx[k].rays;
-    stats->samples += ctx[k].samples;
-  }
 }

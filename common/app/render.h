@@ -8,16 +8,17 @@
 #include <stdbool.h>
 #include <stdint.h>
 #include "film.h"
+#include "sampler.h"
 #include "scene.h"
 
 enum { RENDER_MAX_THREADS = 256 };
 
+/* How to render a scene. What to render, the sample counts included
+ * (scene->samples, scene->light_samples), is the scene's. */
 typedef struct RenderSettings {
   int threads;        /* 0: one per online core; at most RENDER_MAX_THREADS */
   uint32_t seed;      /* keys every random number (with pixel and sample) */
-  int samples;        /* camera samples per pixel */
-  int light_samples;  /* samples per area light */
-  int sampler;        /* sampling pattern (step 07's SamplerKind) */
+  SamplerKind sampler; /* sampling pattern (steps 07, 08) */
   float adaptive;     /* adaptive sampling threshold, 0 = off (steps 07, 08) */
   bool progress;      /* draw a progress bar on stderr */
   struct TraceEvents **traces; /* --aov: one per thread (ctx->trace), else NULL */
@@ -39,36 +40,12 @@ typedef struct RenderCtx {
                             * render; NULL until the first call) */
   uint32_t tile;      /* tiles this thread has started: render_point's memo
                        * keeps the colours of the current one only */
-  char pad[12];       /* keep threads' counters on separate cache lines */
 } RenderCtx;
 
 /* A step's per-pixel work: the colour of pixel (i, j) (i from the left, j from
  * the bottom), linear RGB. Must depend only on its arguments. */
 typedef vec3s (*RenderPixelFn)(const Scene *scene, const Film *film, int i,
                                int j, RenderCtx *ctx);
-
-/* Adaptive sampling (step 07) places its samples on a lattice of
- * RENDER_LATTICE x RENDER_LATTICE points per pixel: lattice point (x, y) is
- * the film point (x, y) / RENDER_LATTICE pixels from the film's bottom-left
- * corner; pixel (i, j)'s corners are (i, j) * RENDER_LATTICE and the next
- * ones along. */
-enum { RENDER_LATTICE = 256 };
-
-/* A step's camera sample: the colour seen through the film point (x, y),
- * in pixels from the film's bottom-left corner (x in [0, width]). */
-typedef vec3s (*RenderPointFn)(const Scene *scene, float x, float y, RenderCtx *ctx);
-
-/* The colour at lattice point (x, y), traced by `trace` the first time the
- * current tile asks for it and remembered for the rest of the tile (a pixel
- * corner serves the four pixels around it, a point on an edge the two on
- * either side). While `trace` runs, ctx->pixel and ctx->sample name the
- * point, not the pixel that asked: ctx->pixel = the corner (x, y) /
- * RENDER_LATTICE rounded down, as j * (width + 1) + i, and ctx->sample = its
- * place above that corner, (y % RENDER_LATTICE) * RENDER_LATTICE +
- * x % RENDER_LATTICE; both are restored afterwards. So a point's colour is a
- * function of its place alone, whichever pixel or thread asks first. */
-vec3s render_point(const Scene *scene, RenderCtx *ctx, RenderPointFn trace, uint32_t x,
-                   uint32_t y);
 
 typedef struct RenderStats {
   double seconds;     /* wall time of the loop */

@@ -1,14 +1,15 @@
-/* Adaptive sampling's lattice points (step 07): render_point remembers the
- * colours a tile has traced, so that a pixel corner is traced once for the
- * four pixels around it. docs/07-antialiasing.md, "Adaptive sampling". */
-#include "app/render.h"
+/* Adaptive sampling's lattice points (step 07; common/app/render_point.h):
+ * render_point remembers the colours a tile has computed, so that a pixel
+ * corner is shaded once for the four pixels around it.
+ * docs/07-antialiasing.md, "Adaptive sampling". */
+#include "app/render_point.h"
 
 #include <stdlib.h>
 
 /* render_point's memo: a direct-mapped table of lattice points, an entry
  * valid only while its tile is the thread's current one. A tile asks for
  * about (TILE + 1)^2 corners and a few hundred points inside pixels; a
- * collision only traces a point again (the same colour), so the table need
+ * collision only computes a point again (the same colour), so the table need
  * not hold them all. */
 enum { MEMO_BITS = 12, MEMO_SIZE = 1 << MEMO_BITS };
 
@@ -21,12 +22,12 @@ struct RenderMemo {
   MemoEntry e[MEMO_SIZE];
 };
 
-vec3s render_point(const Scene *scene, RenderCtx *ctx, RenderPointFn trace, uint32_t x,
+vec3s render_point(const Scene *scene, RenderCtx *ctx, RenderPointFn colour, uint32_t x,
                    uint32_t y)
 {
   if (!ctx->memo)
     ctx->memo = calloc(1, sizeof *ctx->memo);
-  MemoEntry none, *m = &none; /* no memory for a memo: trace every time */
+  MemoEntry none, *m = &none; /* no memory for a memo: compute every time */
   uint32_t h = (x * 0x9e3779b1u) ^ (y * 0x85ebca77u);
   if (ctx->memo)
     m = &ctx->memo->e[(h ^ (h >> 15)) & (MEMO_SIZE - 1)];
@@ -39,7 +40,7 @@ vec3s render_point(const Scene *scene, RenderCtx *ctx, RenderPointFn trace, uint
   ctx->pixel = j * ((uint32_t)scene->width + 1u) + i;
   ctx->sample = (y % RENDER_LATTICE) * RENDER_LATTICE + x % RENDER_LATTICE;
   /* x / 256 is exact in float: x < 2^24 for any film side up to 65535. */
-  vec3s c = trace(scene, (float)x / (float)RENDER_LATTICE, (float)y / (float)RENDER_LATTICE,
+  vec3s c = colour(scene, (float)x / (float)RENDER_LATTICE, (float)y / (float)RENDER_LATTICE,
                   ctx);
   ctx->pixel = pixel;
   ctx->sample = sample;

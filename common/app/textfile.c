@@ -1,5 +1,6 @@
-/* A whole file as text (step 02): a large regular file mapped, a smaller one
- * read at its known size, pipes and devices into a growing buffer.
+/* A whole file as text (step 02): a regular file read at its known size
+ * (or mapped, when large, by the speed pack), pipes and devices into a
+ * growing buffer.
  * docs/scene-format.md. */
 #include "app/textfile.h"
 
@@ -9,11 +10,10 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/mman.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "pages.h"
+#include "app/pack.h"
 
 typedef struct Buf {
   char *s;
@@ -67,21 +67,7 @@ static bool read_all(int fd, size_t hint, size_t max, Buf *b)
   }
 }
 
-enum { MAP_FROM = 8 << 20 }; /* bytes: a regular file this large is mapped */
-
-/* Map the `size` bytes of a regular file, its pages entered at once by the
- * threads (pages_map_file_parallel): no copy, and no page fault, where
- * reading into a new buffer takes 18 000 for 74 MB (docs/reliability.md,
- * "Large scenes", "Ninth pass"). */
-static bool map_file(int fd, size_t size, TextFile *f)
-{
-  void *p = mmap(NULL, size, PROT_READ, MAP_PRIVATE, fd, 0);
-  if (p == MAP_FAILED)
-    return false;
-  pages_map_file_parallel(p, size);
-  *f = (TextFile){.text = p, .len = size, .mapped = true};
-  return true;
-}
+enum { MAP_FROM = 8 << 20 }; /* bytes: the pack may map a regular file this large */
 
 int textfile_read(const char *path, size_t max, TextFile *f)
 {
@@ -97,7 +83,9 @@ int textfile_read(const char *path, size_t max, TextFile *f)
     errno = EFBIG;
   }
   size_t hint = ok && S_ISREG(st.st_mode) ? (size_t)st.st_size : 0;
-  if (ok && hint >= MAP_FROM && map_file(fd, hint, f)) {
+  if (ok && hint >= MAP_FROM && pack_map(fd, hint, &f->text)) {
+    f->len = hint;
+    f->mapped = true;
     close(fd);
     return 0;
   }
@@ -115,10 +103,8 @@ int textfile_read(const char *path, size_t max, TextFile *f)
 
 void textfile_free(TextFile *f)
 {
-  if (f->mapped) {
-    pages_unmap_file_parallel(f->text, f->len);
-    munmap(f->text, f->len);
-  }
+  if (f->mapped)
+    pack_unmap(f->text, f->len);
   else
     free(f->text);
   *f = (TextFile){0};

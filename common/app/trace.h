@@ -1,42 +1,13 @@
-/* Looking inside a render (every step from 02): `--trace X Y` records what
- * the step computes for one pixel (rays, hits, lights, terms), `--aov NAME`
- * (common/app/aov.c) draws one of those quantities for every pixel. Both run
- * the step's own functions; off, each hook below costs one branch.
- * README.md, "For students"; docs/tracing.md. */
+/* The hooks behind `--trace X Y` and `--aov NAME` (every step from 02): the
+ * steps' glue code reports what it computes for a pixel (the camera ray's
+ * hit, each light's l, L_i and term) here; the recorder (app/trace_record.h)
+ * turns it into a pixel's trace (app/trace_pixel.h) or one quantity as a
+ * picture (app/aov.h). Off, each hook costs one branch. README.md, "For
+ * students"; docs/tracing.md. */
 #ifndef RT_TRACE_H
 #define RT_TRACE_H
 
-#include <stdio.h>
-
 #include "app/render.h"
-#include "film.h"
-
-/* One line of a trace: a key ("camera ray"), up to TRACE_FIELDS named values
- * (1 to 3 numbers, or a word), its indentation and the doc that explains it. */
-enum { TRACE_FIELDS = 6, TRACE_NAME = 16, TRACE_WORD = 96 };
-
-typedef struct TraceField {
-  char name[TRACE_NAME];
-  int n;               /* numbers in v (1 to 3); 0: the value is `word` */
-  double v[3];
-  char word[TRACE_WORD];
-} TraceField;
-
-typedef struct TraceLine {
-  int depth;           /* indentation level, 0 = the pixel */
-  char key[24];
-  char doc[120];       /* "docs/04-phong.md, \"The math\"" */
-  int n_fields;
-  TraceField f[TRACE_FIELDS];
-} TraceLine;
-
-typedef struct TraceLines {
-  TraceLine *line;     /* owned */
-  int n, cap;
-} TraceLines;
-
-/* The Phong terms, in --aov's order. */
-typedef enum TraceTerm { TERM_AMBIENT, TERM_DIFFUSE, TERM_SPECULAR, TERM_COUNT } TraceTerm;
 
 /* What a hook reports: a camera ray's closest hit, a light's term at it. */
 typedef enum TraceEventKind { TRACE_EVENT_HIT, TRACE_EVENT_LIGHT, TRACE_EVENT_AREA } TraceEventKind;
@@ -124,35 +95,5 @@ static inline vec3s trace_area(RenderCtx *ctx, int k, bool unoccluded, vec3s c)
   }
   return c;
 }
-
-/* What --trace asks for. */
-typedef struct TraceRequest {
-  const char *step;    /* "05-shadows" */
-  unsigned features;   /* the step's SceneFeature bits */
-  RenderPixelFn pixel; /* the step's pixel function */
-  int x, y;            /* pixel, x from the left, y from the top */
-  Tonemap tonemap;
-  bool json;           /* JSON lines instead of indented text */
-  const char *args;    /* the other options of the command line (JSON header) */
-} TraceRequest;
-
-/* Render pixel (x, y) alone through req->pixel, recording every step, and
- * print the trace to `out`. False (one line printed) when (x, y) is outside
- * the film or memory runs out. */
-bool trace_pixel(const Scene *scene, const RenderSettings *set, const TraceRequest *req,
-                 FILE *out);
-
-/* The text of one line as --trace prints it, indented, without a newline. */
-void trace_line_text(const TraceLine *line, char *buf, size_t size);
-
-/* Print lines as indented text, or as the JSON lines of a trace file. */
-void trace_lines_print(const TraceLines *lines, bool json, FILE *out);
-
-/* Parse one JSON line written by trace_lines_print; false when it is not one. */
-bool trace_line_parse(const char *text, TraceLine *line);
-
-/* Append a copy of `line`; false when out of memory. */
-bool trace_lines_push(TraceLines *lines, const TraceLine *line);
-void trace_lines_free(TraceLines *lines);
 
 #endif

@@ -1,9 +1,9 @@
-/* The recording index of --trace and --aov (common/app/trace_state.h): a
+/* The recording index of --trace and --aov (common/app/trace_index.h): a
  * copy of the scene whose SceneIndex records each query (camera rays, shadow
  * rays, their answers) and answers it with the scene's own index, and the
  * copies of the scene whose materials keep one term. README.md, "For
  * students"; docs/tracing.md. */
-#include "app/trace_state.h"
+#include "app/trace_index.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -11,13 +11,12 @@
 /* "#2 sphere red", "#5 sphere light 0": what an instance is. */
 static void label(const Scene *scene, const Instance *inst, char *buf, size_t size)
 {
-  static const char *const shape[] = {"sphere", "plane", "quad"};
   int id = (int)(inst - scene->instances);
   if (inst->material >= 0)
-    snprintf(buf, size, "#%d %s %s", id, shape[inst->shape],
+    snprintf(buf, size, "#%d %s %s", id, scene_shape_name(inst->shape),
              scene->materials[inst->material].name);
   else
-    snprintf(buf, size, "#%d %s light %d", id, shape[inst->shape], inst->light);
+    snprintf(buf, size, "#%d %s light %d", id, scene_shape_name(inst->shape), inst->light);
 }
 
 /* The nearest of the first `count` instances on the ray before *tmax (*tmax
@@ -125,7 +124,7 @@ static const Instance *traced_closest(const Scene *scene, const Ray *ray, float 
     trace_flush_rays(t, 1);
     camera_query(t, r, hit, hit ? *tmax : INFINITY);
   } else if (!hit) {
-    aov_camera_hit(t, NULL);
+    trace_sum_hit(t, NULL);
   }
   return hit;
 }

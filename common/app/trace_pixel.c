@@ -1,13 +1,13 @@
-/* --trace X Y: pixel (X from the left, Y from the top) rendered alone by the
- * step's pixel function: first once on materials that keep one term each
- * (each light's term in each sample captured), then once recorded
- * (common/app/trace.c); then the pixel's colour and the bytes its export
- * writes. README.md, "For students". */
-#include "app/trace_state.h"
+/* --trace X Y (common/app/trace_pixel.h): pixel (X from the left, Y from the
+ * top) rendered alone by the step's pixel function: first once on materials
+ * that keep one term each (each light's term in each sample captured), then
+ * once recorded (common/app/trace_record.c); then the pixel's colour and the
+ * bytes its export writes. README.md, "For students"; docs/tracing.md. */
+#include "app/trace_pixel.h"
 
 #include <stdlib.h>
 
-#include "app/aov.h"
+#include "app/trace_index.h"
 
 static const char *tonemap_name(Tonemap tm)
 {
@@ -26,7 +26,7 @@ static void end_pixel(Trace *t, const Scene *scene, const TraceRequest *req,
     trace_num(line, "budget", scene->samples);
   }
   for (int k = 0; lit && k < TERM_COUNT; k++)
-    trace_vec(trace_add(&t->lines, 0, aov_name((AovKind)(AOV_AMBIENT + k)),
+    trace_vec(trace_add(&t->lines, 0, trace_term_name((TraceTerm)k),
                         k == TERM_AMBIENT ? TRACE_DOC_AMBIENT : TRACE_DOC_LIGHT),
               "rgb", term[k]);
   const char *doc = TRACE_DOC_FILM; /* a light's own shape: its colour is the lesson */

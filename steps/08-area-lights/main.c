@@ -8,7 +8,7 @@
 /* BEGIN SOLUTION step 07 */
 /* Camera sample: the colour seen through the film point (x, y), in pixels
  * from the film's bottom-left corner. */
-static vec3s trace_point(const Scene *scene, float x, float y, RenderCtx *ctx)
+static vec3s point_colour(const Scene *scene, float x, float y, RenderCtx *ctx)
 {
   ctx->samples++;
   float nx = x / (float)scene->width, ny = y / (float)scene->height;
@@ -21,12 +21,12 @@ static vec3s pixel_sampled(const Scene *scene, int i, int j, RenderCtx *ctx)
 {
   uint32_t n = (uint32_t)scene->samples;
   SamplerPattern pattern =
-      sampler_pattern((SamplerKind)ctx->set->sampler, ctx->set->seed, ctx->pixel, n);
+      sampler_pattern(ctx->set->sampler, ctx->set->seed, ctx->pixel, n);
   FilmAccum acc = {0};
   for (uint32_t k = 0; k < n; k++) {
     ctx->sample = k;
     vec2s s = sampler_point(&pattern, k);
-    film_accum_add(&acc, trace_point(scene, (float)i + s.x, (float)j + s.y, ctx));
+    film_accum_add(&acc, point_colour(scene, (float)i + s.x, (float)j + s.y, ctx));
   }
   return film_accum_mean(&acc);
 }
@@ -44,11 +44,11 @@ static bool colours_differ(const vec3s *c, int n, float threshold)
   return vec_max_abs(glms_vec3_sub(hi, lo)) > threshold;
 }
 
-/* The colour at lattice point (x, y): render_point traces it with
- * trace_point the first time the tile asks, and remembers it. */
+/* The colour at lattice point (x, y): render_point computes it with
+ * point_colour the first time the tile asks, and remembers it. */
 static vec3s at(const Scene *scene, RenderCtx *ctx, uint32_t x, uint32_t y)
 {
-  return render_point(scene, ctx, trace_point, x, y);
+  return render_point(scene, ctx, point_colour, x, y);
 }
 
 /* The mean colour over the square of side `size` (lattice units) whose

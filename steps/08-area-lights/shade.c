@@ -3,14 +3,10 @@
  * they make soft shadows. docs/08-area-lights.md. */
 #include "shade.h"
 
-#include "accel/accel.h"
+#include "app/pack.h"
 #include "app/trace.h"
 #include "rng.h"
 #include "sampler.h"
-
-/* The shadow-volume test pays only with more samples than this; with the
- * grid, a point it clears takes a quarter of the samples, at least this many. */
-enum { SHADOW_VOLUME_MIN_SAMPLES = 4, GRID_UNOCCLUDED_MIN = 16 };
 
 bool shade_visible(const Scene *scene, const Hit *hit, vec3s l, float dist, RenderCtx *ctx)
 {
@@ -67,8 +63,7 @@ static SamplerPattern light_pattern(const RenderCtx *ctx, int light, int n)
 {
   Rng r = rng_make(ctx->set->seed ^ (0x9e3779b9u * (uint32_t)(light + 1)), ctx->pixel,
                    ctx->sample);
-  return sampler_pattern((SamplerKind)ctx->set->sampler, rng_next(&r), ctx->pixel,
-                         (uint32_t)n);
+  return sampler_pattern(ctx->set->sampler, rng_next(&r), ctx->pixel, (uint32_t)n);
 }
 
 /* The light's point (a, b) as a point light of power (P/n) cos(theta_light):
@@ -118,22 +113,11 @@ static vec3s shade_light(const Scene *scene, int k, const Hit *hit, vec3s v, Ren
 {
   const Light *light = &scene->lights[k];
   if (light->type == LIGHT_AREA) {
-    /* A speed-up, not the lesson (docs/performance.md): the samples are
-     * shaded in a view of the scene whose shadow queries test only the lit
-     * shapes that may stand between the point and the light, and answer
-     * "nothing" without a ray when none can. There, with the grid, a quarter
-     * of its samples suffice: without a shadow edge the light's term is
-     * smooth, and the grid's error on it small. */
-    int n = ctx->set->light_samples;
-    if (n <= SHADOW_VOLUME_MIN_SAMPLES)
-      return shade_area(scene, k, hit, v, n, ctx);
-    AccelShadowView storage;
-    Scene view;
-    int few = n / 4 > GRID_UNOCCLUDED_MIN ? n / 4 : GRID_UNOCCLUDED_MIN;
-    if (accel_shadow_view(scene, hit, &light->quad, &storage, &view) == 0 &&
-        ctx->set->sampler == SAMPLER_GRID && few < n)
-      n = few;
-    return shade_area(&view, k, hit, v, n, ctx);
+    /* The samples are shaded in the scene as the speed pack narrows it for
+     * this point and light (app/pack.h); without the pack, the scene itself. */
+    PackView view;
+    int n = pack_light_view(scene, hit, &light->quad, ctx->set, &view);
+    return shade_area(&view.scene, k, hit, v, n, ctx);
   }
   vec3s l;
   vec3s li = shade_incident(scene, &scene->lights[k], hit, &l, ctx);

@@ -25,7 +25,7 @@ vec3s shade_phong_light(const Material *m, const Hit *hit, vec3s v, vec3s li, ve
  * point light of power (P/n) cos(theta_light) (zero when the point is behind
  * the light) that counts only when nothing lies between (shade_visible). The
  * samples follow ctx->set->sampler's pattern, keyed by seed, light, pixel and
- * camera sample. shade_phong asks for ctx->set->light_samples samples (with
+ * camera sample. shade_phong asks for scene->light_samples samples (with
  * the grid, a quarter of them, at least 16, where nothing can shadow the
  * light). */
 vec3s shade_area(const Scene *scene, int light_index, const Hit *hit, vec3s v, int n,

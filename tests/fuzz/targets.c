@@ -9,12 +9,13 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "accel/accel.h"
+#include "index/accel.h"
 #include "app/app.h"
 #include "app/cli.h"
 #include "app/image.h"
 #include "app/parser.h"
 #include "app/parser_state.h"
+#include "reader/pieces.h"
 #include "sampler.h"
 
 static Step step08;
@@ -75,13 +76,13 @@ static void same_in_pieces(const uint8_t *data, size_t size, bool ok, const Scen
 {
   Scene p;
   scene_init(&p);
-  int reparses = parser_reparses;
-  bool ok_p = parser_load_chunks("fuzz.scene", (const char *)data, size, &p, 2 + (int)(size % 2));
+  int reparses = pieces_reparses;
+  bool ok_p = pieces_load("fuzz.scene", (const char *)data, size, &p, 2 + (int)(size % 2));
   if (ok_p != ok)
     bug("the parse in pieces and the whole parse disagree on the text's validity");
   if (!ok)
     return;
-  if (parser_reparses != reparses)
+  if (pieces_reparses != reparses)
     bug("a valid text's pieces failed, and it was parsed again whole (a piece's room?)");
   if (p.n_instances != whole->n_instances || p.n_shapes != whole->n_shapes ||
       p.n_materials != whole->n_materials || p.n_lights != whole->n_lights)
@@ -162,8 +163,7 @@ void fuzz_render(const uint8_t *data, size_t size)
       film_init(&film, s.width, s.height)) {
     SamplerKind kind = SAMPLER_CENTER;
     sampler_parse(samplers[size % 5], &kind);
-    RenderSettings set = {.threads = 1, .seed = 1, .samples = s.samples,
-                          .light_samples = s.light_samples, .sampler = (int)kind,
+    RenderSettings set = {.threads = 1, .seed = 1, .sampler = kind,
                           .adaptive = size % 2 ? step->adaptive : 0.0f, .progress = false};
     RenderStats st;
     render(&s, &film, step->pixel, &set, &st);

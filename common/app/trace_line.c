@@ -1,13 +1,11 @@
-/* Trace lines (common/app/trace.h): building them, printing them as indented
- * text or as JSON (one line per trace line, so that the file is valid JSON
- * and each line parses alone), and reading the JSON back (tools/trace-diff.c).
- * README.md, "For students"; docs/tracing.md. */
-#include "app/trace.h"
+/* Trace lines (common/app/trace_line.h): building them, printing them as
+ * indented text or as JSON (one line per trace line, so that the file is
+ * valid JSON and each line parses alone), and reading the JSON back
+ * (tools/trace-diff.c). README.md, "For students"; docs/tracing.md. */
+#include "app/trace_line.h"
 
 #include <stdlib.h>
 #include <string.h>
-
-#include "app/trace_state.h"
 
 bool trace_lines_push(TraceLines *lines, const TraceLine *line)
 {

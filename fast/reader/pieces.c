@@ -1,13 +1,11 @@
-/* Whole scene texts (step 02): a file read whole, then parsed; a large text
- * in pieces at once, four per thread taken in turn, each writing its shapes
- * at its place in one array, merged in file order (a scene of 10^6 spheres
- * is 74 MB). The lines before the first sphere line, when they are short,
- * are parsed first and their materials given to every piece. Errors are
- * always reported by the one-piece parse, so they read the same.
- * docs/scene-format.md; docs/reliability.md. */
+/* A large scene text parsed in pieces at once, four per thread taken in
+ * turn, each writing its shapes at its place in one array, merged in file
+ * order. The lines before the first sphere line, when they are short, are
+ * parsed first and their materials given to every piece. Errors are always
+ * reported by the one-piece parse (parser_load_whole), so they read the
+ * same. docs/scene-format.md. */
 #define _GNU_SOURCE /* memmem */
-#include "app/parser.h"
-#include "app/parser_state.h"
+#include "reader/pieces.h"
 
 #include <errno.h>
 #include "threads.h"
@@ -15,9 +13,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "app/textfile.h"
+#include "app/parser.h"
+#include "app/parser_state.h"
 #include "grow.h"
-#include "pages.h"
 
 enum {
   PIECE_MIN = 1 << 21, /* bytes: smaller texts are parsed in one piece */
@@ -25,26 +23,12 @@ enum {
   PIECES_PER_THREAD = 4, /* taken in turn: a slow core holds up less */
 };
 
-static bool parse_whole(const char *file, const char *text, size_t len, Scene *scene)
-{
-  Parser p;
-  parser_begin(&p, file, text, len, scene);
-  lexer_skip_bom(&p.lx);
-  bool ok = parser_statements(&p) && parser_resolve(&p);
-  parser_end(&p);
-  if (!ok)
-    scene_free(scene);
-  return ok;
-}
-
 /* Piece boundaries in text[from .. len), each just after a '\n':
  * start[0 .. n], start[0] = from, start[n] = len. The pieces shrink as the
  * parse goes on (piece k of `want` about (2 (want - k) - 1) / want^2 of the
  * text), so that the threads, taking them in turn, finish close together: a
  * thread the machine slows down holds the others up by at most one small
- * piece. With pieces of one size, one thread of two waited a median 7.7 ms
- * (up to 18.6 ms) for the other at the end of the 10^6-sphere parse, now
- * 2.2 ms (up to 6.5 ms; docs/reliability.md, "Thirteenth pass"). */
+ * piece. */
 static int cut_pieces(const char *text, size_t from, size_t len, int want, size_t *start)
 {
   int n = 1;
@@ -70,9 +54,7 @@ typedef struct Piece {
 /* The header: the lines before the first that starts with a sphere, when it
  * starts within the first `limit` bytes; 0 otherwise. Parsed alone first, it
  * gives its materials to every piece, which then finds the materials the
- * spheres name instead of keeping each reference to resolve later (10^6
- * spheres: 500 000 references, 8 MB, in the second of two pieces;
- * docs/reliability.md, "Sixth pass"). */
+ * spheres name instead of keeping each reference to resolve later. */
 static size_t header_length(const char *text, size_t len, size_t limit)
 {
   static const char word[] = "\nsphere ";
@@ -140,23 +122,24 @@ static void merge_shapes(Scene *s, const Scene *q, int known, int first_material
   s->n_instances += q->n_instances;
 }
 
-/* Piece q's planes, which its shapes point to, handed to s; false when out
- * of memory (each piece then still owns its own). */
-static bool take_planes(Scene *s, Scene *q)
+/* Piece q's kept shapes (planes, discs: scene_keep), which its instances
+ * point to, handed to s; false when out of memory (each piece then still
+ * owns its own). */
+static bool take_kept(Scene *s, Scene *q)
 {
-  if (q->n_planes == 0)
+  if (q->n_kept == 0)
     return true;
-  if (!grow_reserve((void **)&s->planes, (size_t)s->n_planes, (size_t)q->n_planes,
-                    sizeof *s->planes))
+  if (!grow_reserve((void **)&s->kept, (size_t)s->n_kept, (size_t)q->n_kept,
+                    sizeof *s->kept))
     return false;
-  memcpy(s->planes + s->n_planes, q->planes, (size_t)q->n_planes * sizeof *q->planes);
-  s->n_planes += q->n_planes;
-  q->n_planes = 0;
+  memcpy(s->kept + s->n_kept, q->kept, (size_t)q->n_kept * sizeof *q->kept);
+  s->n_kept += q->n_kept;
+  q->n_kept = 0;
   return true;
 }
 
 /* Append piece q to piece 0: materials (each name new; q's first `known`
- * were piece 0's to begin with), lights, planes, shapes (their material
+ * were piece 0's to begin with), lights, kept shapes, shapes (their material
  * indices moved past piece 0's), references to materials not defined in q before
  * them (resolved when piece 0 now has the material, else left to resolve).
  * False on a conflict or out of memory. */
@@ -176,7 +159,7 @@ static bool merge(Piece *to, Piece *q, int known)
   for (int k = 0; k < q->scene.n_lights; k++)
     if (!scene_add_light(s, &q->scene.lights[k]))
       return false;
-  if (!take_planes(s, &q->scene))
+  if (!take_kept(s, &q->scene))
     return false;
   merge_shapes(s, &q->scene, known, first_material);
   return parser_pending_merge(&to->p, &q->p, first_instance);
@@ -184,8 +167,7 @@ static bool merge(Piece *to, Piece *q, int known)
 
 /* Lines in text[0 .. len): its newlines, plus one for a last line without
  * one. Counted 255 bytes at a time in one byte, which the compiler turns
- * into vector compares (12 GB/s here, a third of the time of a count in
- * size_t). */
+ * into vector compares. */
 static int count_lines(const char *text, size_t len)
 {
   size_t n = 0;
@@ -199,8 +181,8 @@ static int count_lines(const char *text, size_t len)
   return (int)n + (len > 0 && text[len - 1] != '\n');
 }
 
-int parser_reparses = 0;
-int parser_pieces_pending = 0;
+int pieces_reparses = 0;
+int pieces_pending = 0;
 
 /* Piece k of the text, starting at its place `shapes` in the shared array,
  * with room for `room` shapes. */
@@ -216,11 +198,11 @@ static void piece_begin(Piece *pc, const char *file, const char *text, size_t le
     lexer_skip_bom(&pc->p.lx);
 }
 
-bool parser_load_chunks(const char *file, const char *text, size_t len, Scene *scene,
+bool pieces_load(const char *file, const char *text, size_t len, Scene *scene,
                         int chunks)
 {
   if (chunks < 2)
-    return parse_whole(file, text, len, scene);
+    return parser_load_whole(file, text, len, scene);
   int want = chunks < PIECES_MAX ? chunks : PIECES_MAX;
   /* A header of at most a sixteenth of a piece's mean share (parsed alone,
    * while the other threads wait) becomes piece 0: h = 1. */
@@ -233,12 +215,12 @@ bool parser_load_chunks(const char *file, const char *text, size_t len, Scene *s
   Piece *piece = aligned_alloc(_Alignof(Piece), (size_t)n * sizeof *piece);
   if (n - h < 2 || !piece) {
     free(piece);
-    return parse_whole(file, text, len, scene);
+    return parser_load_whole(file, text, len, scene);
   }
   /* One array for every piece's shapes, room for one a line (a statement
    * is a line): piece k parses into it from first[k], so merging moves each
    * piece down over the few lines that were not shapes instead of copying
-   * it into new memory (docs/reliability.md, "Fifth pass"). The header is
+   * it into new memory. The header is
    * parsed first, into an array of its own, and takes the room of its
    * shapes only: the pieces after a header and before any other line that
    * is not a shape stay where they are. The array's room is the growing
@@ -257,8 +239,7 @@ bool parser_load_chunks(const char *file, const char *text, size_t len, Scene *s
   first[0] = 0;
   for (int k = 0; k < n; k++)
     first[k + 1] += first[k];
-  Instance *shapes = ok ? aligned_alloc(INSTANCE_ALIGN, grow_capacity((size_t)first[n]) *
-                                                          sizeof *shapes)
+  Instance *shapes = ok ? malloc(grow_capacity((size_t)first[n]) * sizeof *shapes)
                         : NULL;
   if (!shapes) {
     if (h) {
@@ -268,9 +249,9 @@ bool parser_load_chunks(const char *file, const char *text, size_t len, Scene *s
     free(piece);
     if (!ok) {
 #pragma omp atomic
-      parser_reparses++;
+      pieces_reparses++;
     }
-    return parse_whole(file, text, len, scene);
+    return parser_load_whole(file, text, len, scene);
   }
   if (h) { /* the header's shapes to the front of the shared array */
     if (first[1] > 0)
@@ -281,13 +262,12 @@ bool parser_load_chunks(const char *file, const char *text, size_t len, Scene *s
   int known = h ? piece[0].scene.n_materials : 0; /* what each piece is given */
 #pragma omp parallel for schedule(dynamic, 1)
   for (int k = h; k < n; k++) {
-    pages_populate(shapes + first[k], (size_t)(first[k + 1] - first[k]) * sizeof *shapes);
     piece_begin(&piece[k], file, text + start[k], start[k + 1] - start[k], shapes + first[k],
                 first[k + 1] - first[k], k == 0);
     piece[k].ok = (!h || preload_materials(&piece[k], &piece[0])) &&
                   parser_statements(&piece[k].p);
 #pragma omp atomic
-    parser_pieces_pending += piece[k].p.n_pending;
+    pieces_pending += piece[k].p.n_pending;
   }
   for (int k = 0; k < n; k++)
     ok = ok && piece[k].ok && (k == 0 || merge(&piece[0], &piece[k], known));
@@ -307,44 +287,16 @@ bool parser_load_chunks(const char *file, const char *text, size_t len, Scene *s
   if (ok)
     return true;
 #pragma omp atomic
-  parser_reparses++;
-  return parse_whole(file, text, len, scene);
+  pieces_reparses++;
+  return parser_load_whole(file, text, len, scene);
 }
 
-bool parser_load_text(const char *file, const char *text, size_t len, Scene *scene)
+bool pieces_parse(const char *file, const char *text, size_t len, Scene *scene, bool *ok)
 {
-  if (len > PARSER_MAX_BYTES) {
-    fprintf(stderr, "%s: expected at most %zu bytes, found %zu\n", file,
-            PARSER_MAX_BYTES, len);
-    scene_free(scene);
-    return false;
-  }
   size_t pieces = len / PIECE_MIN, threads = (size_t)omp_get_max_threads();
   if (pieces < 2 || threads < 2)
-    return parse_whole(file, text, len, scene);
-  size_t want = PIECES_PER_THREAD * threads;
-  return parser_load_chunks(file, text, len, scene, (int)(pieces < want ? pieces : want));
-}
-
-bool parser_load_string(const char *file, const char *text, Scene *scene)
-{
-  return parser_load_text(file, text, strlen(text), scene);
-}
-
-bool parser_load_file(const char *path, Scene *scene)
-{
-  TextFile f;
-  int err = textfile_read(path, PARSER_MAX_BYTES, &f);
-  if (err == EFBIG)
-    fprintf(stderr, "parser: cannot read '%s': larger than %zu bytes, the limit of a "
-            "scene file\n", path, PARSER_MAX_BYTES);
-  else if (err)
-    fprintf(stderr, "parser: cannot read '%s': %s\n", path, strerror(err));
-  if (err) {
-    scene_free(scene);
     return false;
-  }
-  bool ok = parser_load_text(path, f.text, f.len, scene);
-  textfile_free(&f);
-  return ok;
+  size_t want = PIECES_PER_THREAD * threads;
+  *ok = pieces_load(file, text, len, scene, (int)(pieces < want ? pieces : want));
+  return true;
 }

@@ -2,8 +2,8 @@
  * where a ray pays least, i.e. minimising
  *   C_trav + (A_left / A) cost(left) + (A_right / A) cost(right),
  * with a leaf of n items costing n C_item (each item is tested on its own).
- * Items may be weighted (clusters of boxes, common/accel/bvh.c). */
-#include "accel/bvh_sah.h"
+ * Items may be weighted (clusters of boxes, fast/index/bvh.c). */
+#include "index/bvh_sah.h"
 
 #include <float.h>
 #include <math.h>
@@ -17,30 +17,6 @@ enum {
   TASK_MIN = 8192,   /* subtrees of more (weighted) items are built as tasks */
 };
 static const float COST_TRAV = 1.0f, COST_ITEM = 1.5f;
-
-Box sah_box_empty(void)
-{
-  return (Box){{FLT_MAX, FLT_MAX, FLT_MAX, 0.0f}, {-FLT_MAX, -FLT_MAX, -FLT_MAX, 0.0f}};
-}
-
-/* Lane by lane, a < b ? a : b. */
-static V4 v4_min(V4 a, V4 b)
-{
-  I4 m = a < b;
-  return (V4)((m & (I4)a) | (~m & (I4)b));
-}
-
-static V4 v4_max(V4 a, V4 b)
-{
-  I4 m = a > b;
-  return (V4)((m & (I4)a) | (~m & (I4)b));
-}
-
-void sah_box_grow(Box *b, const Box *x)
-{
-  b->lo = v4_min(x->lo, b->lo);
-  b->hi = v4_max(x->hi, b->hi);
-}
 
 /* Half the surface area (the factor 2 cancels in every ratio). */
 static float box_area(const Box *b)
@@ -118,10 +94,10 @@ static void sweep_bins(const SahBuild *b, int first, int count, const Box *cb, V
       int v = bin[a];
       if (!(used[a] >> v & 1u)) {
         used[a] |= 1u << v;
-        box[a][v] = sah_box_empty();
+        box[a][v] = box_empty();
         n[a][v] = 0;
       }
-      sah_box_grow(&box[a][v], it);
+      box_grow(&box[a][v], it);
       n[a][v] += w;
     }
   }
@@ -132,18 +108,18 @@ static void sweep_bins(const SahBuild *b, int first, int count, const Box *cb, V
     Box right[BINS];
     for (uint32_t m = used[a]; m; m &= m - 1)
       last[groups++] = __builtin_ctz(m);
-    Box acc = sah_box_empty();
+    Box acc = box_empty();
     int acc_n = 0;
     for (int g = groups - 1; g > 0; g--) {
-      sah_box_grow(&acc, &box[a][last[g]]);
+      box_grow(&acc, &box[a][last[g]]);
       acc_n += n[a][last[g]];
       right[g] = acc;
       right_n[g] = acc_n;
     }
-    acc = sah_box_empty();
+    acc = box_empty();
     acc_n = 0;
     for (int g = 1; g < groups; g++) {
-      sah_box_grow(&acc, &box[a][last[g - 1]]);
+      box_grow(&acc, &box[a][last[g - 1]]);
       acc_n += n[a][last[g - 1]];
       consider(COST_TRAV + (box_area(&acc) * leaf_cost(acc_n) +
                             box_area(&right[g]) * leaf_cost(right_n[g])) / area,
@@ -180,7 +156,7 @@ typedef struct Halves {
 static void halves_empty(Halves *h)
 {
   for (int s = 0; s < 2; s++) {
-    h->box[s] = h->cb[s] = sah_box_empty();
+    h->box[s] = h->cb[s] = box_empty();
     h->weight[s] = 0;
   }
 }
@@ -190,8 +166,8 @@ static void halves_add(Halves *h, int s, const SahBuild *b, int k)
 {
   const Box *it = &b->items[k];
   Box c = {it->lo + it->hi, it->lo + it->hi};
-  sah_box_grow(&h->box[s], it);
-  sah_box_grow(&h->cb[s], &c);
+  box_grow(&h->box[s], it);
+  box_grow(&h->cb[s], &c);
   h->weight[s] += weight_of(b, k);
 }
 
@@ -332,12 +308,12 @@ static void build_node(SahBuild *b, int node, int first, int count, int depth, i
 
 void sah_build_node(SahBuild *b, int node, int first, int count, int depth, int block)
 {
-  Box box = sah_box_empty(), cb = sah_box_empty();
+  Box box = box_empty(), cb = box_empty();
   for (int k = first; k < first + count; k++) {
     const Box *it = &b->items[k];
     Box c = {it->lo + it->hi, it->lo + it->hi};
-    sah_box_grow(&box, it);
-    sah_box_grow(&cb, &c);
+    box_grow(&box, it);
+    box_grow(&cb, &c);
   }
   build_node(b, node, first, count, depth, block, &box, &cb);
 }

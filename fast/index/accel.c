@@ -1,12 +1,12 @@
 /* Acceleration structure (docs/performance.md): the lit spheres under a
- * bounding volume hierarchy (common/accel/bvh.c), everything else in a list;
+ * bounding volume hierarchy (fast/index/bvh.c), everything else in a list;
  * in scenes of at most 16 spheres, their cones seen from the eye and the
- * lights (common/accel/cones.c) for the rays those know. The boxes and cones
+ * lights (fast/index/cones.c) for the rays those know. The boxes and cones
  * only choose which instances a ray meets; each one met is tested with
  * scene_instance_hit_t, the shape's own function (the hierarchy's spheres
  * with sphere_hit_t, what it calls for them), so the answers are those of
  * scene.c's plain loop. */
-#include "accel/accel.h"
+#include "index/accel.h"
 
 #include <limits.h>
 #include <math.h>
@@ -16,10 +16,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "accel/bvh.h"
-#include "accel/cones.h"
-#include "accel/hull.h"
-#include "pages.h"
+#include "index/bvh.h"
+#include "index/cones.h"
+#include "index/hull.h"
 
 enum {
   STACK = 64,  /* traversal stack: the tree is at most about 60 levels deep */
@@ -34,7 +33,7 @@ typedef struct Accel {
   int *others;      /* instance indices of everything else, lit ones first */
   int n_others, n_others_lit;
   Cones *cones;     /* small scenes: the spheres' cones seen from the eye and
-                     * the lights (accel/cones.c), or NULL */
+                     * the lights (index/cones.c), or NULL */
 } Accel;
 
 /* The closest hit so far: distance and instance index (INT_MAX: none). */
@@ -243,7 +242,7 @@ static int layout_wanted(void)
        : strcmp(env, "bvh") == 0  ? 2 : -1;
 }
 
-/* A sphere as the build reads it (accel/bvh.h). */
+/* A sphere as the build reads it (index/box.h). */
 static Ball sphere_ball(const Sphere *s)
 {
   return (Ball){s->center.x, s->center.y, s->center.z, s->radius};
@@ -280,14 +279,13 @@ static bool lit_sphere(const Scene *scene, int k)
  * else into acc->others (instance order, so the lit ones first); returns the
  * spheres' count. Large scenes in blocks, one per thread: each block counted,
  * then filled at its place, so the lists are the same for any thread count
- * (with the balls, each instance's cache line is read twice, not three
- * times, and the sort no longer takes one thread: docs/reliability.md,
- * "Fourth pass"). *base: when a large scene's lit spheres are the instances
+ * (the balls written with the ids, so that each instance is read twice, not
+ * three times). *base: when a large scene's lit spheres are the instances
  * base, base + 1, ... (a file of spheres, its planes before or after them),
  * ids[] and balls[] are left unwritten, sphere k being instance base + k,
  * which the build reads in place; else -1. The fill is then only that of the
- * few others: one pass over the instances instead of two ("Ninth pass"),
- * and no copy of the spheres ("Twelfth pass"). */
+ * few others: one pass over the instances instead of two, and no copy of
+ * the spheres. */
 static int sort_instances(const Scene *scene, Accel *acc, int *ids, Ball *balls, int *base)
 {
   int n = scene->n_instances, threads = omp_get_max_threads();
@@ -329,8 +327,6 @@ static int sort_instances(const Scene *scene, Accel *acc, int *ids, Ball *balls,
 #pragma omp parallel for schedule(static, 1) if (blocks > 1)
     for (int b = 0; b < blocks; b++) {
       int s = spheres[b], o = first[b] - spheres[b];
-      if (blocks > 1) /* a large scene: its fresh pages in one call each */
-        pages_populate(ids + s, (size_t)(spheres[b + 1] - s) * sizeof *ids);
       for (int k = first[b]; k < first[b + 1]; k++) {
         if (lit_sphere(scene, k)) {
           balls[s] = sphere_ball(&scene->instances[k].sphere);
@@ -433,13 +429,12 @@ static bool instance_may_occlude(const Instance *inst, const ShadowHull *h)
   switch (inst->shape) {
   case SHAPE_SPHERE: return hull_may_meet_sphere(h, inst->sphere.center, inst->sphere.radius);
   case SHAPE_PLANE: return hull_may_meet_plane(h, inst->plane);
-  case SHAPE_QUAD: return true;
+  default: return true; /* a quad, a disc: may (conservative) */
   }
-  return true;
 }
 
-/* Not inlined: once per shading point, and inlined (LTO) into a step's
- * sample loop it made that loop's code 10 % slower even where never called. */
+/* Not inlined: it runs once per shading point, and inlined (LTO) into a
+ * step's sample loop it slowed that loop even where never called. */
 __attribute__((noinline)) int accel_quad_occluders(const Scene *scene, const Hit *hit,
                                                    const Quad *q, int *ids, int max)
 {

@@ -1,14 +1,14 @@
-/* Bounding volume hierarchy over the spheres' cubes, built top-down with the
- * binned surface area heuristic: the build half of the scene's acceleration
- * structure (common/accel/accel.c traverses it). docs/performance.md. */
-#ifndef RT_BVH_H
-#define RT_BVH_H
+/* Boxes and balls of the BVH build (index/bvh.c, index/bvh_sah.c,
+ * index/morton.c): a box's bounds in four float lanes, so that growing one
+ * takes a few vector instructions, and the tree's node. */
+#ifndef RT_BOX_H
+#define RT_BOX_H
 
-#include <stdbool.h>
+#include <float.h>
 #include <stddef.h>
 #include <string.h>
 
-#include "accel/cones.h"
+#include "index/cones.h"
 
 /* One node, 32 bytes. Inner node: children nodes[index] and nodes[index + 1],
  * meta = -1 - the axis they were split along, nodes[index] the lower of the
@@ -34,7 +34,7 @@ typedef struct Box {
 typedef V4 Ball;
 
 /* The cube a ball stands for: the sphere's radius padded by the margin of
- * every culling test (sphere_pad, accel/cones.h). */
+ * every culling test (sphere_pad, index/cones.h). */
 static inline Box ball_box(Ball b)
 {
   Sphere s = {.center = {{b[0], b[1], b[2]}}, .radius = b[3]};
@@ -70,20 +70,29 @@ static inline Box node_box(const BvhNode *nd)
   return (Box){{nd->lo[0], nd->lo[1], nd->lo[2], 0.0f}, {nd->hi[0], nd->hi[1], nd->hi[2], 0.0f}};
 }
 
-typedef struct Bvh {
-  BvhNode *nodes; /* nodes[0] is the root; owned */
-  int n_nodes;
-  int *order;     /* item indices in leaf order; owned */
-  int n_items;
-} Bvh;
+/* The empty box (lo > hi), and a box grown to hold x. */
+static inline Box box_empty(void)
+{
+  return (Box){{FLT_MAX, FLT_MAX, FLT_MAX, 0.0f}, {-FLT_MAX, -FLT_MAX, -FLT_MAX, 0.0f}};
+}
 
-/* Build over the cubes of n >= 1 balls, leaves of at most leaf_max items
- * (leaf_max >= n: the root is one leaf of all of them). Deterministic (same
- * input, same tree, for any number of threads). False (one line printed)
- * when out of memory; bvh is then empty. */
-bool bvh_build(Bvh *bvh, Balls balls, int n, int leaf_max);
+/* Lane by lane, a < b ? a : b. */
+static inline V4 v4_min(V4 a, V4 b)
+{
+  I4 m = a < b;
+  return (V4)((m & (I4)a) | (~m & (I4)b));
+}
 
-/* Free the tree; a second call is harmless. */
-void bvh_free(Bvh *bvh);
+static inline V4 v4_max(V4 a, V4 b)
+{
+  I4 m = a > b;
+  return (V4)((m & (I4)a) | (~m & (I4)b));
+}
+
+static inline void box_grow(Box *b, const Box *x)
+{
+  b->lo = v4_min(x->lo, b->lo);
+  b->hi = v4_max(x->hi, b->hi);
+}
 
 #endif

@@ -1,7 +1,7 @@
 /* Acceleration structure for the scene queries (docs/performance.md): a
  * bounding volume hierarchy over the lit spheres, the other instances in a
  * list, and for small scenes the spheres' cones seen from the eye and the
- * lights (accel/cones.c). It only chooses which instances a ray is tested against; every test
+ * lights (index/cones.c). It only chooses which instances a ray is tested against; every test
  * is the shape's own function (scene_instance_hit_t: the student's
  * sphere_hit_t, plane_hit_t). */
 #ifndef RT_ACCEL_H
@@ -23,7 +23,7 @@ enum { ACCEL_FLAT_MAX = 16 };
 /* True when no lit shape can stop a shadow ray ray_spawn(hit, l) toward any
  * point of the parallelogram q on the front side of hit->n: scene_occluded
  * would then answer false for every one of them. A conservative test of the
- * shapes against the hull of hit->p and q (common/accel/hull.c), through the
+ * shapes against the hull of hit->p and q (fast/index/hull.c), through the
  * hierarchy's boxes when there is one; false when unsure. */
 bool accel_quad_unoccluded(const Scene *scene, const Hit *hit, const Quad *q);
 
@@ -33,27 +33,5 @@ bool accel_quad_unoccluded(const Scene *scene, const Hit *hit, const Quad *q);
  * shape lets every such ray pass: scene_occluded over ids alone answers as
  * over the whole scene. */
 int accel_quad_occluders(const Scene *scene, const Hit *hit, const Quad *q, int *ids, int max);
-
-enum { ACCEL_VIEW_MAX = 8 };
-
-/* A view of a scene whose shadow queries test only the shapes that may stop
- * a shadow ray from one hit point toward one area light (accel/shadow_view.c);
- * the storage behind the view's index. */
-typedef struct AccelShadowView {
-  SceneIndex index;    /* the view's index: `any` over ids only */
-  const Scene *scene;  /* the scene viewed: its index answers `closest` */
-  int n;
-  int ids[ACCEL_VIEW_MAX];
-} AccelShadowView;
-
-/* Fill *view with `scene` as seen by the shadow rays ray_spawn(hit, l) toward
- * the front-side points of q: when no lit shape can stop them, a view with no
- * occluders (scene_view_unoccluded); when at most ACCEL_VIEW_MAX may, one
- * whose shadow queries test only those (its index lives in *storage, which
- * must outlive the view); otherwise the scene itself. Returns the number of
- * shapes the view tests: 0, 1 .. ACCEL_VIEW_MAX, or -1 for the whole scene.
- * scene_occluded answers on the view exactly as on the scene for those rays. */
-int accel_shadow_view(const Scene *scene, const Hit *hit, const Quad *q,
-                      AccelShadowView *storage, Scene *view);
 
 #endif

@@ -1,11 +1,20 @@
-/* The recorder behind --trace and --aov (common/app/trace.c): a copy of the
- * scene whose index records every query and answers it with the scene's own
- * index, and what has been recorded of the pixel so far. Private to
- * trace.c and aov.c. README.md, "For students". */
-#ifndef RT_TRACE_STATE_H
-#define RT_TRACE_STATE_H
+/* The recorder behind --trace and --aov: a copy of the scene whose index
+ * records every query (app/trace_index.h), and what the hooks (app/trace.h)
+ * and the queries have reported of the pixel so far, turned into the lines
+ * of a trace or the sums of an --aov. Shared by the trace_*.c files and
+ * aov.c. README.md, "For students"; docs/tracing.md. */
+#ifndef RT_TRACE_RECORD_H
+#define RT_TRACE_RECORD_H
 
 #include "app/trace.h"
+#include "app/trace_line.h"
+#include "film.h"
+
+/* The Phong terms, in --aov's order (app/aov.h). */
+typedef enum TraceTerm { TERM_AMBIENT, TERM_DIFFUSE, TERM_SPECULAR, TERM_COUNT } TraceTerm;
+
+/* The term's name as a trace line's key: "ambient", "diffuse", "specular". */
+const char *trace_term_name(TraceTerm term);
 
 typedef struct Trace Trace;
 
@@ -49,7 +58,7 @@ struct Trace {
   TraceEvents events;  /* first member: ctx->trace points here */
   TraceMode mode;
   int term;            /* TRACE_CAPTURE: the term the materials keep */
-  int aov;             /* TRACE_AOV: the AovKind summed */
+  int aov;             /* TRACE_AOV: the AovKind drawn (app/aov.h) */
   bool compact;        /* several camera samples: one line per sample */
   const char *camera_doc; /* step 02's fixed camera or step 03's */
   RenderPixelFn pixel; /* the step's pixel function */
@@ -73,28 +82,11 @@ struct Trace {
   TraceCaptured *captured[TERM_COUNT]; /* owned */
   int n_captured[TERM_COUNT], cap_captured[TERM_COUNT];
 
-  /* --aov sums over the pixel. */
-  FilmAccum sum;
+  /* --aov sums over the pixel's camera rays (a miss adds zero to normal and
+   * albedo, nothing to depth) and its shadow rays. */
+  FilmAccum normal, depth, albedo;
   int shadow_rays, shadow_clear;
 };
-
-/* Building lines: trace_add appends an empty line (NULL when out of memory;
- * the setters then do nothing), the setters append a field to it. */
-TraceLine *trace_add(TraceLines *lines, int depth, const char *key, const char *doc);
-void trace_num(TraceLine *line, const char *name, double v);
-void trace_vec(TraceLine *line, const char *name, vec3s v);
-void trace_vec2(TraceLine *line, const char *name, vec2s v);
-void trace_word(TraceLine *line, const char *name, const char *word);
-
-/* A new, zeroed recorder (the scene copies hold cglm matrices, which want
- * more alignment than malloc gives); free it with free(). NULL when out of
- * memory. */
-Trace *trace_new(void);
-
-/* Set up `t` over `scene` (which it must outlive) for `mode`; false when out
- * of memory (one line printed). */
-bool trace_init(Trace *t, const Scene *scene, TraceMode mode);
-void trace_free(Trace *t);
 
 /* Forget the previous pixel; the next closest-hit query is its camera ray. */
 void trace_begin_pixel(Trace *t);
@@ -104,7 +96,7 @@ void trace_begin_pixel(Trace *t);
 void trace_drain(Trace *t);
 void trace_flush_rays(Trace *t, int depth);
 
-/* --aov sums (common/app/aov.c): a camera ray's hit (NULL: it hit nothing). */
-void aov_camera_hit(Trace *t, const TraceEvent *hit);
+/* --aov: add a camera ray's hit (NULL: it hit nothing) to the sums. */
+void trace_sum_hit(Trace *t, const TraceEvent *hit);
 
 #endif

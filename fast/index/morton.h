@@ -1,13 +1,13 @@
 /* Morton order: ball centres interleaved bit by bit into one code (10 bits an
  * axis), so that sorting by code puts neighbours in space next to each
- * other. The BVH build's clusters (common/accel/bvh.c); docs/performance.md. */
+ * other. The BVH build's clusters (fast/index/bvh.c); docs/performance.md. */
 #ifndef RT_MORTON_H
 #define RT_MORTON_H
 
 #include <stdbool.h>
 #include <stdint.h>
 
-#include "accel/bvh_sah.h"
+#include "index/box.h"
 
 /* ids[0 .. n): the balls' indices sorted by the Morton code of their
  * centres (on a cubic grid over the centres' bounds, so that a flat scene is

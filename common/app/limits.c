@@ -1,13 +1,13 @@
 /* The limits of a scene's values (step 02): what keeps the renderer's floats
  * finite. docs/scene-format.md, "Limits". */
-#include "app/bounds.h"
+#include "app/limits.h"
 
 #include <math.h>
 #include <string.h>
 
 #include "quad.h"
 
-double bounds_sin_angle(vec3s a, vec3s b)
+double limits_sin_angle(vec3s a, vec3s b)
 {
   double cx = (double)a.y * b.z - (double)a.z * b.y;
   double cy = (double)a.z * b.x - (double)a.x * b.z;
@@ -17,7 +17,7 @@ double bounds_sin_angle(vec3s a, vec3s b)
   return sqrt((cx * cx + cy * cy + cz * cz) / (la * lb));
 }
 
-bool bounds_direction(Lexer *lx, const Field *f, const char *what)
+bool limits_direction(Lexer *lx, const Field *f, const char *what)
 {
   char text[3 * LEXER_TOKEN_MAX];
   if (vec_is_zero(f->v))
@@ -31,10 +31,10 @@ bool bounds_direction(Lexer *lx, const Field *f, const char *what)
   return true;
 }
 
-bool bounds_length(Lexer *lx, const Field *f, const char *what)
+bool limits_length(Lexer *lx, const Field *f, const char *what)
 {
   char text[LEXER_TOKEN_MAX];
-  if (bounds_length_ok(f->v.x))
+  if (limits_length_ok(f->v.x))
     return true;
   fields_text(lx, f, 1, text, sizeof text);
   if (!(f->v.x > 0.0f))
@@ -43,12 +43,12 @@ bool bounds_length(Lexer *lx, const Field *f, const char *what)
                     "fit in a float), found '%s'", what, text);
 }
 
-bool bounds_edges(Lexer *lx, const Field *e1, const Field *e2)
+bool limits_edges(Lexer *lx, const Field *e1, const Field *e2)
 {
   if (vec_is_zero(e1->v) || vec_is_zero(e2->v))
     return lexer_fail(lx, (vec_is_zero(e1->v) ? e1 : e2)->val_col, "expected a non-zero "
                       "%s, found '0 0 0'", vec_is_zero(e1->v) ? "edge1" : "edge2");
-  if (!(bounds_sin_angle(e1->v, e2->v) > 1e-6))
+  if (!(limits_sin_angle(e1->v, e2->v) > 1e-6))
     return lexer_fail(lx, e2->val_col, "expected edge2 not parallel to edge1 (a light "
                       "with an area), found parallel edges");
   Quad q = quad_make(glms_vec3_zero(), e1->v, e2->v);

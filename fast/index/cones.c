@@ -21,7 +21,7 @@
  * of the float comparisons (about 2^-20). A ball holding P (or nearly) is a
  * candidate for every ray. The comparisons run on all spheres at once (the
  * lanes of a GCC vector); they only choose which spheres are tested. */
-#include "accel/cones.h"
+#include "index/cones.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -307,7 +307,7 @@ Cones *cones_build(const Scene *scene, const int *ids, int n)
    * registers still in use (the balls above are filled 256 bits at a time
    * and a path without lights ends with no vzeroupper): every legacy SSE
    * instruction after that waits on them, libm's fmaxf in step 02's pixel
-   * among them, which made that step's frame 50 % slower. */
+   * among them, which slowed that step's frame by half. */
   __builtin_ia32_vzeroupper();
 #endif
   return c;

@@ -2,7 +2,7 @@
  * shadow"): conservative tests that a shape cannot stop any shadow ray from a
  * hit point to a parallelogram light, as the float intersection code computes
  * those rays. Every test errs toward "may meet". */
-#include "accel/hull.h"
+#include "index/hull.h"
 
 #include <math.h>
 

@@ -1,14 +1,21 @@
-/* The recorder behind --trace and --aov (common/app/trace.h): what the
- * steps' hooks reported (the camera ray's hit, each light's l, n.l, L_i and
- * term), read at each scene query and after the pixel, turned into the lines
- * of a trace or the sums of an --aov. README.md, "For students";
+/* The recorder behind --trace and --aov (common/app/trace_record.h): what
+ * the steps' hooks reported (the camera ray's hit, each light's l, n.l, L_i
+ * and term), read at each scene query and after the pixel, turned into the
+ * lines of a trace or the sums of an --aov. README.md, "For students";
  * docs/tracing.md. */
-#include "app/trace_state.h"
+#include "app/trace_record.h"
 
 #include <stdlib.h>
-#include <string.h>
 
-#include "app/aov.h"
+static const char *const TERM_NAMES[] = {
+    [TERM_AMBIENT] = "ambient", [TERM_DIFFUSE] = "diffuse", [TERM_SPECULAR] = "specular"};
+_Static_assert(sizeof TERM_NAMES / sizeof *TERM_NAMES == TERM_COUNT,
+               "TERM_NAMES: one name per TraceTerm");
+
+const char *trace_term_name(TraceTerm term)
+{
+  return TERM_NAMES[term];
+}
 
 /* ---------------------------------------------------------------- hooks */
 
@@ -27,7 +34,7 @@ static void on_hit(Trace *t, const TraceEvent *e)
   t->light_shape = e->inst->light;
   t->n = e->n;
   if (t->mode == TRACE_AOV)
-    aov_camera_hit(t, e);
+    trace_sum_hit(t, e);
   if (t->mode != TRACE_RECORD || t->compact || !t->lines.n)
     return;
   TraceLine *line = &t->lines.line[t->lines.n - 1]; /* the closest hit line */
@@ -71,7 +78,7 @@ static void capture(Trace *t, uint32_t sample, int k, vec3s c)
 static void light_terms(Trace *t, TraceLine *line, const TraceEvent *e, int depth)
 {
   for (int term = TERM_DIFFUSE; term <= TERM_SPECULAR; term++) {
-    const char *name = aov_name((AovKind)(AOV_AMBIENT + term));
+    const char *name = trace_term_name((TraceTerm)term);
     vec3s c;
     TraceLine *to = t->compact ? line : trace_add(&t->lines, depth, name, TRACE_DOC_LIGHT);
     const char *field = t->compact ? name : "rgb";
@@ -82,9 +89,16 @@ static void light_terms(Trace *t, TraceLine *line, const TraceEvent *e, int dept
   }
 }
 
+/* The light's kind as its statement names it (a switch: -Wswitch fails the
+ * build on a LightType without a case). */
 static const char *light_type(const Light *light)
 {
-  return light->type == LIGHT_POINT ? "point" : light->type == LIGHT_AREA ? "area" : "directional";
+  switch (light->type) {
+  case LIGHT_POINT: return "point";
+  case LIGHT_DIRECTIONAL: return "directional";
+  case LIGHT_AREA: return "area";
+  }
+  return "?";
 }
 
 static void on_light(Trace *t, const TraceEvent *e)
@@ -115,7 +129,7 @@ static void on_area(Trace *t, const TraceEvent *e)
   snprintf(key, sizeof key, "light %d area", e->light);
   int depth = t->compact;
   TraceLine *line = trace_add(&t->lines, depth, key, TRACE_DOC_AREA);
-  trace_num(line, "samples", t->ctx->set->light_samples);
+  trace_num(line, "samples", t->plain.light_samples);
   if (e->flag) /* the renderer proved nothing can block the light */
     trace_word(line, "shadow rays", "none needed (shadow-volume test)");
   else
@@ -134,8 +148,8 @@ void trace_drain(Trace *t)
     else if (t->mode == TRACE_CAPTURE)
       capture(t, e->sample, e->light, e->c);
     else if (t->mode == TRACE_AOV && e->kind == TRACE_EVENT_AREA && e->flag) {
-      t->shadow_rays += t->ctx->set->light_samples; /* no shadow ray: all clear */
-      t->shadow_clear += t->ctx->set->light_samples;
+      t->shadow_rays += t->plain.light_samples; /* no shadow ray: all clear */
+      t->shadow_clear += t->plain.light_samples;
     } else if (t->mode == TRACE_RECORD)
       (e->kind == TRACE_EVENT_LIGHT ? on_light : on_area)(t, e);
   }
@@ -145,12 +159,22 @@ void trace_drain(Trace *t)
   t->events.n = t->events.dropped = 0;
 }
 
+void trace_sum_hit(Trace *t, const TraceEvent *hit)
+{
+  vec3s zero = glms_vec3_zero();
+  film_accum_add(&t->normal, hit ? glms_vec3_scale(glms_vec3_adds(hit->n, 1.0f), 0.5f) : zero);
+  if (hit) /* the depth is the mean over the rays that hit */
+    film_accum_add(&t->depth, glms_vec3_broadcast(hit->t));
+  film_accum_add(&t->albedo, hit && hit->inst->material >= 0
+                                 ? t->plain.materials[hit->inst->material].diffuse : zero);
+}
+
 void trace_begin_pixel(Trace *t)
 {
   t->camera_next = true;
   t->camera_rays = 0;
   t->lit = false;
   t->light_shape = -1;
-  t->sum = (FilmAccum){0};
+  t->normal = t->depth = t->albedo = (FilmAccum){0};
   t->shadow_rays = t->shadow_clear = 0;
 }

@@ -1,6 +1,6 @@
-/* Morton order of ball centres (common/accel/bvh.c's clusters): codes on a
+/* Morton order of ball centres (fast/index/bvh.c's clusters): codes on a
  * cubic grid, a radix sort, runs of neighbours. docs/performance.md. */
-#include "accel/morton.h"
+#include "index/morton.h"
 
 #include "threads.h"
 #include <stdlib.h>
@@ -21,7 +21,7 @@ static uint32_t spread3(uint32_t x)
  * over the centres' bounds (a flat scene is not cut along its thin axis). */
 static void morton_codes(Balls items, int n, uint64_t *pair)
 {
-  Box cb = sah_box_empty();
+  Box cb = box_empty();
   float lo0 = cb.lo[0], lo1 = cb.lo[1], lo2 = cb.lo[2];
   float hi0 = cb.hi[0], hi1 = cb.hi[1], hi2 = cb.hi[2];
 #pragma omp parallel for schedule(static) if (n > 65536) \
@@ -39,8 +39,7 @@ static void morton_codes(Balls items, int n, uint64_t *pair)
     extent = cb.hi[a] - cb.lo[a] > extent ? cb.hi[a] - cb.lo[a] : extent;
   float scale = extent > 0.0f ? (float)(1 << MORTON_BITS) / extent : 0.0f;
   /* Each axis's cell spread by a table (4 KB), the clamps done on the three
-   * lanes at once: 1.3 ms where the spreads' shifts and the branches took
-   * 3.1 ms for 10^6 balls (2 threads, best of 30 in a test program). */
+   * lanes at once: cheaper than the spreads' shifts and branches. */
   uint32_t spread[1 << MORTON_BITS];
   for (uint32_t x = 0; x < (1u << MORTON_BITS); x++)
     spread[x] = spread3(x);

@@ -1,12 +1,12 @@
-/* The binned surface-area-heuristic split of common/accel/bvh.c: the build of
+/* The binned surface-area-heuristic split of fast/index/bvh.c: the build of
  * a subtree over weighted boxes (docs/performance.md). Internal to
- * common/accel/bvh.c. */
+ * fast/index/bvh.c. */
 #ifndef RT_BVH_SAH_H
 #define RT_BVH_SAH_H
 
 #include <stdbool.h>
 
-#include "accel/bvh.h"
+#include "index/box.h"
 
 /* A build over items (boxes), partitioned in place. With `weight`, item k
  * stands for weight[k] boxes (a cluster, or a group of clusters) and counts
@@ -22,10 +22,6 @@ typedef struct SahBuild {
   int *leaf_node;      /* with weights */
   int *leaf_depth;     /* with weights, or NULL: each leaf's depth */
 } SahBuild;
-
-/* The empty box (lo > hi), and a box grown to hold x. */
-Box sah_box_empty(void);
-void sah_box_grow(Box *b, const Box *x);
 
 /* The axis along which the middles of boxes a and b lie furthest apart;
  * *b_lower: b's middle is the lower along it. Two children split without

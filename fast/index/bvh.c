@@ -1,5 +1,5 @@
 /* BVH build (docs/performance.md): the binned surface area heuristic of
- * common/accel/bvh_sah.c over the balls' cubes. Above CLUSTER_FROM balls it
+ * fast/index/bvh_sah.c over the balls' cubes. Above CLUSTER_FROM balls it
  * runs twice: the balls sorted along a Morton curve are cut into clusters of
  * at most CLUSTER neighbours, each cluster's subtree is built over its own
  * balls, then the heuristic builds the tree over the clusters' bounds (over
@@ -11,7 +11,7 @@
  * end; the clustered build leaves none: the tree over the groups of
  * clusters takes the first slots, then each group's region holds what is
  * below it (build_clustered). */
-#include "accel/bvh.h"
+#include "index/bvh.h"
 
 #include <limits.h>
 #include "threads.h"
@@ -20,9 +20,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "accel/bvh_sah.h"
-#include "accel/morton.h"
-#include "pages.h"
+#include "index/bvh_sah.h"
+#include "index/morton.h"
 
 enum {
   CLUSTER_FROM = 16384, /* fewer balls: one build over all of them */
@@ -126,10 +125,10 @@ static BvhNode cluster_node(SahBuild *b, Balls balls, int first, int count, int 
 {
   if (count <= b->leaf_max) { /* the ids in increasing order */
     sort_leaf(b->ids + first, count);
-    Box box = sah_box_empty();
+    Box box = box_empty();
     for (int k = first; k < first + count; k++) {
       Box it = ball_box(balls_get(balls, b->ids[k]));
-      sah_box_grow(&box, &it);
+      box_grow(&box, &it);
     }
     return node_make(&box, first, count);
   }
@@ -143,7 +142,7 @@ static BvhNode cluster_node(SahBuild *b, Balls balls, int first, int count, int 
   int axis = sah_apart_axis(&box[0], &box[1], &second_lower);
   b->nodes[block + second_lower] = half[0];
   b->nodes[block + !second_lower] = half[1];
-  sah_box_grow(&box[0], &box[1]);
+  box_grow(&box[0], &box[1]);
   return node_make(&box[0], block, -1 - axis);
 }
 
@@ -217,10 +216,10 @@ static void cut_clusters(const uint64_t *sorted, const MortonRuns *gr, MortonRun
 static void group_clusters(const MortonRuns *gr, const Top *t, Top *g)
 {
   for (int k = 0; k < gr->n; k++) {
-    g->boxes[k] = sah_box_empty();
+    g->boxes[k] = box_empty();
     g->weight[k] = 0;
     for (int j = g->first[k]; j < g->first[k] + g->count[k]; j++) {
-      sah_box_grow(&g->boxes[k], &t->boxes[j]);
+      box_grow(&g->boxes[k], &t->boxes[j]);
       g->weight[k] += t->weight[j];
     }
     g->ids[k] = k;
@@ -327,12 +326,9 @@ bool bvh_build(Bvh *bvh, Balls balls, int n, int leaf_max)
   if (ok && n > CLUSTER_FROM && !b.one_leaf && leaf_max >= 2) {
     /* The node array (64 n bytes), written only once the clusters are cut,
      * holds the sort's pairs (16 n bytes) until then, so the nodes land on
-     * pages already touched (10^6 spheres: 8 000 fewer page faults;
-     * docs/reliability.md, "Fifth pass"); the clusters are cut from the
+     * pages already touched (fewer page faults); the clusters are cut from the
      * sorted pairs themselves. */
     uint64_t *scratch = (uint64_t *)(void *)b.nodes;
-    pages_populate_parallel(scratch, (size_t)n * 2 * sizeof *scratch);
-    pages_populate_parallel(b.ids, (size_t)n * sizeof *b.ids);
     ok = morton_sort(balls, n, b.ids, scratch) &&
          build_clustered(&b, balls, n, scratch + n, &n_nodes);
   } else if (ok && (b.items = malloc((size_t)n * sizeof *b.items))) {
