@@ -12,6 +12,25 @@
 
 /* ---------------------------------------------------------------- hooks */
 
+_Thread_local TraceEvents *trace_term_events;
+
+void trace_term_record(TraceTermFn fn, const Material *m, const Hit *hit, vec3s v, vec3s li,
+                       vec3s l)
+{
+  TraceEvents *ev = trace_term_events;
+  for (int k = (ev->n < TRACE_EVENTS ? ev->n : TRACE_EVENTS + 1) - 1; k >= 0; k--) {
+    TraceEvent *e = &ev->e[k];
+    if (e->kind == TRACE_EVENT_LIGHT && e->flag && !memcmp(&e->li, &li, sizeof li) &&
+        !memcmp(&e->l, &l, sizeof l)) {
+      trace_term_events = NULL; /* the call below reports nothing */
+      e->c = fn(m, hit, v, li, l);
+      e->flag = false;
+      trace_term_events = ev;
+      return;
+    }
+  }
+}
+
 void trace_flush_rays(Trace *t, int depth)
 {
   for (int k = 0; k < t->rays.n; k++) {

@@ -46,7 +46,7 @@ typedef struct TraceEvent {
   int light;           /* LIGHT, AREA: index into scene->lights */
   uint32_t sample;     /* ctx->sample */
   bool flag;           /* HIT: a back face; AREA: proved unblocked (no
-                        * shadow ray traced) */
+                        * shadow ray traced); LIGHT: no term reported yet */
   const struct Instance *inst; /* HIT: the instance hit */
   float t;             /* HIT: its distance */
   vec3s p, n;          /* HIT: the hit point and normal */
@@ -98,18 +98,50 @@ static inline void trace_hit(RenderCtx *ctx, const Hit *hit)
   }
 }
 
-/* Light k's term c for the radiance li arriving from the unit direction l at
- * the camera ray's hit; returns c. */
-static inline vec3s trace_light(RenderCtx *ctx, int k, vec3s li, vec3s l, vec3s c)
+/* A light's term is reported in two halves, so that the trace follows
+ * whatever shade_phong does with the step's functions: shade_incident
+ * reports light k's L_i and l (trace_incident: its term 0 until reported),
+ * and shade_phong_light, wherever it is called from, the term it returns
+ * for that L_i and l (trace_term). shade_phong_light has no ctx: the events
+ * of the pixel this thread traces are in trace_term_events (NULL when off). */
+extern _Thread_local struct TraceEvents *trace_term_events;
+
+/* Light k's radiance li arriving from the unit direction l at the camera
+ * ray's hit (shade_incident); returns li. */
+static inline vec3s trace_incident(RenderCtx *ctx, int k, vec3s li, vec3s l)
 {
+#ifndef TRACE_COMPILED_OUT
+  trace_term_events = ctx->trace;
+#endif
   if (TRACE_ON(ctx)) {
     TraceEvent *e = trace_slot(ctx, TRACE_EVENT_LIGHT);
     e->light = k;
     e->li = li;
     e->l = l;
-    e->c = c;
+    e->c = glms_vec3_zero();
+    e->flag = true;
   }
-  return c;
+  return li;
+}
+
+/* shade_phong_light's own signature, for trace_term. */
+typedef vec3s (*TraceTermFn)(const Material *m, const Hit *hit, vec3s v, vec3s li, vec3s l);
+
+/* The term of the light whose L_i and l trace_incident reported last with
+ * these values: fn (shade_phong_light itself) called once more with the same
+ * arguments, tracing off, gives the value the call returns, whatever return
+ * its code takes. Called first thing in shade_phong_light. */
+void trace_term_record(TraceTermFn fn, const Material *m, const Hit *hit, vec3s v, vec3s li,
+                       vec3s l);
+static inline void trace_term(TraceTermFn fn, const Material *m, const Hit *hit, vec3s v,
+                              vec3s li, vec3s l)
+{
+#ifndef TRACE_COMPILED_OUT
+  if (__builtin_expect(trace_term_events != NULL, 0))
+    trace_term_record(fn, m, hit, v, li, l);
+#else
+  (void)fn, (void)m, (void)hit, (void)v, (void)li, (void)l;
+#endif
 }
 
 /* Area light k's term c at the hit (the sum over its samples); `unoccluded`
