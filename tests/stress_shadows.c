@@ -333,8 +333,7 @@ static void require_plain_render(const Scene *base, float *lo, float *hi, bool *
   Count n = compare(img, lo, hi, amb);
   free(img);
   scene_free(&sc);
-  Check c = CHECK("camera_ray (step 03), sphere_hit_t, plane_hit_t (step 02), "
-                  "shade_phong_light (step 04)",
+  Check c = CHECK("camera_ray, sphere_hit_t, plane_hit_t, shade_phong_light (steps 02 to 04)",
                   "docs/04-phong.md, \"What you write\"");
   CHECK_REQUIRE(&c, n.acne + n.leak == 0, "step 04's render of scenes/spheres.scene at 160x120 "
                 "(no shadows) differs from the long-double reference without shadows in %ld "

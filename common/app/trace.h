@@ -46,11 +46,18 @@ typedef struct TraceEvent {
   int light;           /* LIGHT, AREA: index into scene->lights */
   uint32_t sample;     /* ctx->sample */
   bool flag;           /* HIT: a back face; AREA: proved unblocked (no
-                        * shadow ray traced); LIGHT: no term reported yet */
+                        * shadow ray traced) */
   const struct Instance *inst; /* HIT: the instance hit */
   float t;             /* HIT: its distance */
   vec3s p, n;          /* HIT: the hit point and normal */
   vec3s li, l, c;      /* LIGHT: L_i, toward the light, the term; AREA: c */
+  /* LIGHT: shade_phong_light's arguments for this L_i and l (trace_term),
+   * `term` the function itself (trace_incident); the recorder calls it once
+   * more with them for the term. m NULL: not called for this light. */
+  vec3s (*term)(const Material *m, const Hit *hit, vec3s v, vec3s li, vec3s l);
+  const Material *m;
+  Hit hit;
+  vec3s v;
 } TraceEvent;
 
 /* The events reported since the recorder last read them (it does at each
@@ -100,15 +107,19 @@ static inline void trace_hit(RenderCtx *ctx, const Hit *hit)
 
 /* A light's term is reported in two halves, so that the trace follows
  * whatever shade_phong does with the step's functions: shade_incident
- * reports light k's L_i and l (trace_incident: its term 0 until reported),
- * and shade_phong_light, wherever it is called from, the term it returns
- * for that L_i and l (trace_term). shade_phong_light has no ctx: the events
- * of the pixel this thread traces are in trace_term_events (NULL when off). */
+ * reports light k's L_i and l (trace_incident), and shade_phong_light,
+ * wherever it is called from, its arguments for that L_i and l
+ * (trace_term); the recorder calls shade_phong_light once more with them
+ * for the term, whatever return its code takes. shade_phong_light has no
+ * ctx: the events of the pixel this thread traces are in trace_term_events
+ * (NULL when off). Both hooks only store: the recorder makes the call. */
 extern _Thread_local struct TraceEvents *trace_term_events;
 
+typedef vec3s (*TraceTermFn)(const Material *m, const Hit *hit, vec3s v, vec3s li, vec3s l);
+
 /* Light k's radiance li arriving from the unit direction l at the camera
- * ray's hit (shade_incident); returns li. */
-static inline vec3s trace_incident(RenderCtx *ctx, int k, vec3s li, vec3s l)
+ * ray's hit (shade_incident); term: the step's shade_phong_light. Returns li. */
+static inline vec3s trace_incident(RenderCtx *ctx, int k, vec3s li, vec3s l, TraceTermFn term)
 {
 #ifndef TRACE_COMPILED_OUT
   trace_term_events = ctx->trace;
@@ -119,28 +130,31 @@ static inline vec3s trace_incident(RenderCtx *ctx, int k, vec3s li, vec3s l)
     e->li = li;
     e->l = l;
     e->c = glms_vec3_zero();
-    e->flag = true;
+    e->term = term;
+    e->m = NULL;
   }
   return li;
 }
 
-/* shade_phong_light's own signature, for trace_term. */
-typedef vec3s (*TraceTermFn)(const Material *m, const Hit *hit, vec3s v, vec3s li, vec3s l);
-
-/* The term of the light whose L_i and l trace_incident reported last with
- * these values: fn (shade_phong_light itself) called once more with the same
- * arguments, tracing off, gives the value the call returns, whatever return
- * its code takes. Called first thing in shade_phong_light. */
-void trace_term_record(TraceTermFn fn, const Material *m, const Hit *hit, vec3s v, vec3s li,
-                       vec3s l);
-static inline void trace_term(TraceTermFn fn, const Material *m, const Hit *hit, vec3s v,
-                              vec3s li, vec3s l)
+/* shade_phong_light's arguments, first thing in it: kept with the light
+ * trace_incident reported last with this li and l. */
+static inline void trace_term(const Material *m, const Hit *hit, vec3s v, vec3s li, vec3s l)
 {
 #ifndef TRACE_COMPILED_OUT
-  if (__builtin_expect(trace_term_events != NULL, 0))
-    trace_term_record(fn, m, hit, v, li, l);
+  TraceEvents *ev = trace_term_events;
+  if (__builtin_expect(ev != NULL, 0))
+    for (int k = (ev->n < TRACE_EVENTS ? ev->n : TRACE_EVENTS + 1) - 1; k >= 0; k--) {
+      TraceEvent *e = &ev->e[k];
+      if (e->kind == TRACE_EVENT_LIGHT && !e->m && e->li.x == li.x && e->li.y == li.y &&
+          e->li.z == li.z && e->l.x == l.x && e->l.y == l.y && e->l.z == l.z) {
+        e->m = m;
+        e->hit = *hit;
+        e->v = v;
+        break;
+      }
+    }
 #else
-  (void)fn, (void)m, (void)hit, (void)v, (void)li, (void)l;
+  (void)m, (void)hit, (void)v, (void)li, (void)l;
 #endif
 }
 

@@ -26,12 +26,14 @@ vec3s shade_incident(const Scene *scene, const Light *light, const Hit *hit,
    * needs no shadow ray. */
   if (glms_vec3_dot(hit->n, *l) > 0.0f && !shade_visible(scene, hit, *l, dist, ctx))
     li = glms_vec3_zero();
-  return trace_incident(ctx, (int)(light - scene->lights), li, *l);
+  return trace_incident(ctx, (int)(light - scene->lights), li, *l, shade_phong_light);
 }
 
-vec3s shade_phong_light(const Material *m, const Hit *hit, vec3s v, vec3s li, vec3s l)
+/* inline: a hint that keeps it inlined into the render's loop, though the
+ * tracer calls it too (trace_incident; docs/tracing.md). */
+inline vec3s shade_phong_light(const Material *m, const Hit *hit, vec3s v, vec3s li, vec3s l)
 {
-  trace_term(shade_phong_light, m, hit, v, li, l); /* --trace, --aov: the term it returns */
+  trace_term(m, hit, v, li, l); /* --trace, --aov: its arguments */
   vec3s c = glms_vec3_zero();
   /* BEGIN SOLUTION step 04 */
   float n_dot_l = glms_vec3_dot(hit->n, l);
