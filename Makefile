@@ -207,14 +207,18 @@ endif
 N_NUM = $(shell expr '$(N)' + 0 2>/dev/null)
 N_PAD = $(if $(N_NUM),$(shell printf %02d '$(N_NUM)' 2>/dev/null))
 STEP_N = $(filter $(N_PAD)-%,$(STEPS))
+# With the stress tests of steps 01 .. N; TEST_STEP_STRESS=0: the step's own
+# tests alone (tools/check-regions.sh and tools/mutants.sh run those apart).
+TEST_STEP_STRESS ?= 1
+TEST_STEP_STRESSBIN = $(if $(filter 1,$(TEST_STEP_STRESS)),$(call stress_bins,$(N_PAD)))
 test-step:
 	@if [ -z "$(N)" ]; then echo "usage: make test-step N   (N = 1 .. 8)"; exit 2; fi
 	@if [ -z "$(STEP_N)" ]; then echo "make test-step: there is no step '$(N)' (steps are 1 .. 8)"; exit 2; fi
 	@if [ -z "$(filter $(STEP_N),$(PRESENT))" ]; then \
 	  echo "make test-step: step $(STEP_N) does not exist yet (no steps/$(STEP_N)/)"; exit 1; fi
-	@$(MAKE) --no-print-directory $(BUILD)/tests/$(STEP_N) $(call stress_bins,$(N_PAD))
-	@RT_STRESS_STEPS=$(N_PAD) tests/run.sh --verbose $(BUILD)/tests/$(STEP_N) $(STRESSBIN); \
-	  status=$$?; $(REPORT_AFTER_STEP); exit $$status
+	@$(MAKE) --no-print-directory $(BUILD)/tests/$(STEP_N) $(TEST_STEP_STRESSBIN)
+	@RT_STRESS_STEPS=$(N_PAD) tests/run.sh --verbose $(BUILD)/tests/$(STEP_N) \
+	  $(filter $(STRESSBIN),$(TEST_STEP_STRESSBIN)); status=$$?; $(REPORT_AFTER_STEP); exit $$status
 
 # Both suites: one after the other, or side by side under make -j2 (CI runs
 # make -j2 -Orecurse sanitize, each suite's lines printed together).
