@@ -8,7 +8,10 @@
 #include <mpfr.h>
 #include <stdarg.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <sys/stat.h>
+
+#include <criterion/criterion.h>
 
 #include "rng.h"
 #include "vec.h"
@@ -17,6 +20,17 @@
 #define BUILD_DIR "build"
 #endif
 #define STRESS_DIR BUILD_DIR "/stress"
+
+/* The step a stress test belongs to: the latest step whose functions it runs
+ * (docs/accuracy.md). RT_STRESS_STEPS=K (make stress, make test-step K) runs
+ * the tests of steps 01 .. K and skips the others, so that a student's run
+ * never meets a step not written yet; unset, every test runs. */
+static inline void stress_step(int step)
+{
+  const char *upto = getenv("RT_STRESS_STEPS");
+  if (upto && *upto && step > atoi(upto))
+    cr_skip_test("a stress test of step %02d (this run: steps 01 .. %02d)", step, atoi(upto));
+}
 
 /* MPFR precision of every reference: the inputs are floats (24-bit
  * significands with exponents within 2^-60 .. 2^60 of each other), so sums of
@@ -54,6 +68,24 @@ static inline vec3s stress_perp(vec3s a, Rng *g)
   double x = b.x - k * a.x, y = b.y - k * a.y, z = b.z - k * a.z;
   double n = sqrt(x * x + y * y + z * z);
   return vec_make((float)(x / n), (float)(y / n), (float)(z / n));
+}
+
+/* v and x as stored: read back through a volatile, the float the function
+ * under test receives is the float the MPFR reference reads. The tests form
+ * their inputs in double and round them to float; once link-time
+ * optimisation inlines the function under test into the test, GCC 12's SLP
+ * vectorizer can drop such a rounding where the function widens the value
+ * back to double, and the function would then measure another ray than the
+ * reference (docs/accuracy.md, "A GCC 12 bug"). */
+static inline vec3s stress_stored(vec3s v)
+{
+  volatile vec3s stored = v;
+  return stored;
+}
+static inline float stress_stored_f(float x)
+{
+  volatile float stored = x;
+  return stored;
 }
 
 /* The size of one ulp of the float nearest to x (x finite). */

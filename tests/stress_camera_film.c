@@ -47,6 +47,7 @@ static vec3s turned(vec3s dir, vec3s axis_perp, double angle)
 
 Test(stress, t6_camera_basis_orthonormal_when_up_is_almost_the_view_direction)
 {
+  stress_step(3);
   stress_table("t6_camera", "Test 6: camera basis, worst |u.v|, ||u|-1|, ... (and w against "
                "the exact view direction) for up within angle of the view direction",
                "| angle (rad) | cameras | textbook orthonormality | orthonormality | w error |"
@@ -54,8 +55,8 @@ Test(stress, t6_camera_basis_orthonormal_when_up_is_almost_the_view_direction)
   const double angles[] = {1e-6, 1e-7, 1e-9, 0.0};
   const char *labels[] = {"1e-6", "1e-7", "1e-9", "0 (exactly parallel: fallback)"};
   double worst = 0.0;
-  Check ck = CHECK("camera_init", "docs/03-camera.md, \"What you write\"");
-  Check rk = CHECK_RELYING("camera_ray", "docs/03-camera.md, \"What you write\"",
+  Check ck = CHECK("camera_init (step 03)", "docs/03-camera.md, \"What you write\"");
+  Check rk = CHECK_RELYING("camera_ray (step 03)", "docs/03-camera.md, \"What you write\"",
                            "camera_init (its basis)");
   for (int a = 0; a < 4; a++) {
     double w_orth = 0.0, w_dir = 0.0, w_txt = 0.0;
@@ -100,6 +101,7 @@ Test(stress, t6_camera_basis_orthonormal_when_up_is_almost_the_view_direction)
  * 64-bit significand, 2^26 terms of 24 bits lose nothing that matters). */
 Test(stress, t7_film_average_of_2_24_and_more_samples_within_1e_6)
 {
+  stress_step(7);
   stress_table("t7_film_sum", "Test 7: mean of n samples, relative error against a long "
                "double sum", "| samples | values | naive float sum | FilmAccum (Neumaier) |"
                "\n|---|---|---|---|");
@@ -150,6 +152,7 @@ static uint64_t inverse_odd(uint64_t a)
 
 Test(stress, t8_rng_never_returns_one_and_srgb_round_trips_all_codes)
 {
+  stress_step(1);
   uint64_t y = ~0ull;
   y = unxorshift(y, 31);
   y *= inverse_odd(0x94d049bb133111ebull);
@@ -162,7 +165,7 @@ Test(stress, t8_rng_never_returns_one_and_srgb_round_trips_all_codes)
   Check rc = CHECK("rng_float (given code)", "docs/07-antialiasing.md, \"The math\"");
   CHECK_NEAR(&rc, 1.0 - 0x1p-24, top, 0.0, "rng_float for all-ones bits: the largest output, "
              "below 1");
-  Check c = CHECK("film_to_byte", "docs/01-film.md, \"What you write\"");
+  Check c = CHECK("film_to_byte (step 01)", "docs/01-film.md, \"What you write\"");
   int bad = 0;
   for (int b = 0; b < 256; b++) {
     /* The exact sRGB decoding of code b, in long double. */

@@ -44,25 +44,29 @@ static long nonfinite_pixels(const char *name, const char *text)
 
 Test(stress, t5_degenerate_scenes_render_no_nan_or_infinite_pixel)
 {
+  stress_step(5);
   /* Each case, and where a NaN or an infinity would come from. */
   struct {
     const char *name, *shininess, *light, *fn, *why;
   } cases[] = {
-      {"light_on_sphere", "32", "light point position 0 2 0 power 10 10 10\n", "light_incident",
+      {"light_on_sphere", "32", "light point position 0 2 0 power 10 10 10\n",
+       "light_incident (step 04)",
        "a point light on the surface: r = 0 at the shaded point gives P / 0 and l = 0 / 0 "
        "unless r <= min_dist gives zero"},
-      {"light_on_plane", "32", "light point position 1.5 0 0 power 10 10 10\n", "light_incident",
+      {"light_on_plane", "32", "light point position 1.5 0 0 power 10 10 10\n",
+       "light_incident (step 04)",
        "a point light in the floor: r = 0 where it touches"},
       {"light_at_shaded_point", "32", "light point position 0 0 0 power 10 10 10\n",
-       "light_incident", "a point light exactly at a shaded point: r = 0"},
+       "light_incident (step 04)", "a point light exactly at a shaded point: r = 0"},
       {"light_inside_sphere", "32", "light point position 0 1 0 power 10 10 10\n",
-       "shade_visible, ray_spawn", "a light inside a sphere: every shadow ray is blocked"},
-      {"shininess_0", "0", "light point position 3 4 3 power 10 10 10\n", "shade_phong_light",
+       "shade_visible, ray_spawn (step 05)", "a light inside a sphere: every shadow ray is blocked"},
+      {"shininess_0", "0", "light point position 3 4 3 power 10 10 10\n",
+       "shade_phong_light (step 04)",
        "shininess 0: max(0, r.v)^0 is 1, also for r.v = 0"},
       {"shininess_1e9", "1e9", "light point position 3 4 3 power 10 10 10\n",
-       "shade_phong_light", "shininess 1e9: the lobe underflows to 0"},
+       "shade_phong_light (step 04)", "shininess 1e9: the lobe underflows to 0"},
       {"grazing_light", "32", "light directional direction 1 0 0 irradiance 1 1 1\n",
-       "shade_phong_light", "a light in the floor's plane: n.l = 0 adds nothing"},
+       "shade_phong_light (step 04)", "a light in the floor's plane: n.l = 0 adds nothing"},
   };
   stress_table("t5_degenerate", "Test 5: non-finite channels in step 05 renders of "
                "degenerate scenes (81x61)", "| scene | non-finite channels |\n|---|---|");
@@ -79,11 +83,12 @@ Test(stress, t5_degenerate_scenes_render_no_nan_or_infinite_pixel)
 
 Test(stress, t5_degenerate_rays_and_zero_area_lights_give_no_nan)
 {
+  stress_step(5);
   /* A ray parallel to a plane, above it and inside it: no hit. */
   Plane pl = plane_make(vec_make(0.0f, 1.0f, 0.0f), vec_make(0.0f, 1.0f, 0.0f));
   Ray above = {.o = vec_make(0.0f, 2.0f, 0.0f), .d = vec_make(1.0f, 0.0f, 0.0f)};
   Ray inside = {.o = vec_make(0.0f, 1.0f, 0.0f), .d = vec_make(1.0f, 0.0f, 0.0f)};
-  Check pc = CHECK("plane_hit_t", "docs/02-intersection.md, \"What you write\"");
+  Check pc = CHECK("plane_hit_t (step 02)", "docs/02-intersection.md, \"What you write\"");
   CHECK_NEAR(&pc, INFINITY, plane_hit_t(&pl, above, INFINITY), 0.0,
              "ray parallel to the plane, above it: a miss is INFINITY");
   CHECK_NEAR(&pc, INFINITY, plane_hit_t(&pl, inside, INFINITY), 0.0,
@@ -91,9 +96,9 @@ Test(stress, t5_degenerate_rays_and_zero_area_lights_give_no_nan)
   /* Origins exactly on spheres (float points on the surface): any answer
    * must be finite or INFINITY, and a filled hit finite. */
   long bad = 0;
-  Check st = CHECK("sphere_hit_t", "docs/02-intersection.md, \"What you write\"");
-  Check sf = CHECK("sphere_hit_fill", "docs/02-intersection.md, \"What you write\"");
-  Check sp = CHECK("ray_spawn", "docs/05-shadows.md, \"What you write\"");
+  Check st = CHECK("sphere_hit_t (step 02)", "docs/02-intersection.md, \"What you write\"");
+  Check sf = CHECK("sphere_hit_fill (step 02)", "docs/02-intersection.md, \"What you write\"");
+  Check sp = CHECK("ray_spawn (step 05)", "docs/05-shadows.md, \"What you write\"");
   for (int k = 0; k < 20000; k++) {
     Rng g = rng_make(5, 0, (uint32_t)k);
     Sphere s = {.center = glms_vec3_scale(stress_unit(&g), (float)stress_log10u(&g, -3, 5)),

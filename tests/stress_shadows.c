@@ -298,7 +298,7 @@ static void scaled_scene(const Scene *base, double s, double T, bool far, char *
  * at 1.1 .. 10^5 radii against the long-double root (16 ulps: test 1 asks 4). */
 static void require_precise_sphere(void)
 {
-  Check c = CHECK("sphere_hit_t", "docs/02-intersection.md, \"What you write\"");
+  Check c = CHECK("sphere_hit_t (step 02)", "docs/02-intersection.md, \"What you write\"");
   for (int k = 0; k < 400; k++) {
     Rng g = rng_make(40, 0, (uint32_t)k);
     double ratio = stress_log10u(&g, log10(1.1), 5.0);
@@ -307,7 +307,7 @@ static void require_precise_sphere(void)
     vec3s u = stress_unit(&g);
     vec3s o = glms_vec3_add(s.center, glms_vec3_scale(u, (float)(ratio * s.radius)));
     L3 d = unit(sub(l3(s.center), l3(o)));
-    Ray r = {.o = o, .d = vec_make((float)d.x, (float)d.y, (float)d.z)};
+    Ray r = {.o = o, .d = stress_stored(vec_make((float)d.x, (float)d.y, (float)d.z))};
     LD clear, want = ref_sphere(&s, l3(r.o), unit(l3(r.d)), INFINITY, &clear);
     float t = sphere_hit_t(&s, r, INFINITY);
     double ulps = fabs((double)(t - want)) / stress_ulp((double)want);
@@ -333,7 +333,7 @@ static void require_plain_render(const Scene *base, float *lo, float *hi, bool *
   Count n = compare(img, lo, hi, amb);
   free(img);
   scene_free(&sc);
-  Check c = CHECK("camera_ray, sphere_hit_t, plane_hit_t, shade_phong_light",
+  Check c = CHECK("camera_ray, sphere_hit_t, plane_hit_t, shade_phong_light (steps 02 to 04)",
                   "docs/04-phong.md, \"What you write\"");
   CHECK_REQUIRE(&c, n.acne + n.leak == 0, "step 04's render of scenes/spheres.scene at 160x120 "
                 "(no shadows) differs from the long-double reference without shadows in %ld "
@@ -362,6 +362,7 @@ static double camera_error(const Scene *sc)
 
 Test(stress, t4_no_acne_and_no_leak_at_any_scale, .timeout = 600)
 {
+  stress_step(5);
   Scene base;
   scene_init(&base);
   cr_assert(parser_load_file("scenes/spheres.scene", &base), "cannot load the step-05 scene");
@@ -375,12 +376,12 @@ Test(stress, t4_no_acne_and_no_leak_at_any_scale, .timeout = 600)
                "fixed epsilon = tools/mistakes.c epsilon=1e-4",
                "| scale | translation | camera | undecidable | step 05 acne | step 05 leak | "
                "fixed-eps acne | fixed-eps leak |\n|---|---|---|---|---|---|---|---|");
-  Check c = CHECK_RELYING("ray_spawn, shade_visible",
+  Check c = CHECK_RELYING("ray_spawn, shade_visible (step 05)",
                           "docs/05-shadows.md, \"Self-intersection: where the shadow ray starts\"",
-                          "camera_ray (checked for each scene), sphere_hit_t (checked at "
-                          "1.1 .. 10^5 radii), light_incident, shade_phong_light (checked "
-                          "at scale 1 without shadows)");
-  Check cam = CHECK("camera_ray", "docs/03-camera.md, \"What you write\"");
+                          "camera_ray (step 03, checked for each scene), sphere_hit_t "
+                          "(step 02, checked at 1.1 .. 10^5 radii), light_incident, "
+                          "shade_phong_light (step 04, checked at scale 1 without shadows)");
+  Check cam = CHECK("camera_ray (step 03)", "docs/03-camera.md, \"What you write\"");
   double cam_worst = 0.0;
   long bad = 0;
   for (int e = -4; e <= 5; e++) {

@@ -33,7 +33,7 @@ static void require_plain_sphere(void)
 {
   Sphere s = {.center = vec_make(0.0f, 0.0f, -5.0f), .radius = 1.0f};
   Ray r = {.o = vec_make(0.0f, 0.0f, 0.0f), .d = vec_make(0.0f, 0.0f, -1.0f)};
-  Check c = CHECK("sphere_hit_t", DOC);
+  Check c = CHECK("sphere_hit_t (step 02)", DOC);
   float t = sphere_hit_t(&s, r, INFINITY);
   CHECK_REQUIRE(&c, fabsf(t - 4.0f) <= 1e-4f, "a plain hit (unit sphere 5 away, t = 4) gives "
                 "t = %.9g: fix `make test-step 2` first; this stress test measures the last "
@@ -140,11 +140,13 @@ static void make_setup(Rng *g, double ratio, Sphere *s, vec3s *o, vec3s *u)
   double c_len = ratio * r * stress_log10u(g, -3.0, 0.0);
   vec3s cdir = stress_unit(g);
   *u = stress_unit(g);
-  s->radius = (float)r;
-  s->center = vec_make((float)(c_len * cdir.x), (float)(c_len * cdir.y), (float)(c_len * cdir.z));
+  s->radius = stress_stored_f((float)r);
+  s->center = stress_stored(
+      vec_make((float)(c_len * cdir.x), (float)(c_len * cdir.y), (float)(c_len * cdir.z)));
   double dist = ratio * r;
-  *o = vec_make((float)(s->center.x + dist * u->x), (float)(s->center.y + dist * u->y),
-                (float)(s->center.z + dist * u->z));
+  *o = stress_stored(vec_make((float)(s->center.x + dist * u->x),
+                              (float)(s->center.y + dist * u->y),
+                              (float)(s->center.z + dist * u->z)));
 }
 
 /* Unit direction from o toward centre + e * off (double, then float). */
@@ -152,7 +154,7 @@ static vec3s aim(vec3s o, vec3s c, vec3s e, double off)
 {
   double x = c.x + off * e.x - o.x, y = c.y + off * e.y - o.y, z = c.z + off * e.z - o.z;
   double n = sqrt(x * x + y * y + z * z);
-  return vec_make((float)(x / n), (float)(y / n), (float)(z / n));
+  return stress_stored(vec_make((float)(x / n), (float)(y / n), (float)(z / n)));
 }
 
 /* Refined-point error in units of 2^-24 (|c| + r), the bound of test 3. */
@@ -163,8 +165,9 @@ static double point_err_units(const Sphere *s, vec3s p)
 
 Test(stress, t1_sphere_distance_within_4_ulp_for_central_rays)
 {
+  stress_step(2);
   require_plain_sphere();
-  Check ck = CHECK("sphere_hit_t", DOC);
+  Check ck = CHECK("sphere_hit_t (step 02)", DOC);
   stress_table("t1_sphere_ulps",
                "Test 1: ray-sphere distance error, central rays (worst ulps of t)",
                "| distance/radius | rays | textbook b^2-c | robust, b and c in float | "
@@ -210,13 +213,14 @@ Test(stress, t1_sphere_distance_within_4_ulp_for_central_rays)
 
 Test(stress, t2_sphere_hit_or_miss_decided_beyond_two_ulps_of_distance)
 {
+  stress_step(2);
   stress_table("t2_sphere_hitmiss",
                "Test 2: wrong hit/miss decisions among rays aimed at the silhouette "
                "(clearance > 2 2^-24 distance); closest wrong decision in 2^-24 distance",
                "| distance/radius | rays | decidable | textbook wrong | robust wrong | "
                "robust: largest wrong clearance |\n|---|---|---|---|---|---|");
   require_plain_sphere();
-  Check ck = CHECK("sphere_hit_t", DOC);
+  Check ck = CHECK("sphere_hit_t (step 02)", DOC);
   long total_wrong = 0;
   double worst_clear = 0.0;
   enum { PER_BIN = 8000 };
@@ -267,12 +271,13 @@ Test(stress, t2_sphere_hit_or_miss_decided_beyond_two_ulps_of_distance)
 
 Test(stress, t3_refined_sphere_points_within_4_ulps_of_the_surface)
 {
+  stress_step(2);
   stress_table("t3_sphere_points",
                "Test 3a: distance of hit points from the sphere, in 2^-24 (|c| + r) "
                "(worst); grazing rays at angle theta to the surface",
                "| rays | hits | textbook p = o + t d | robust (re-projected) |\n|---|---|---|---|");
   require_plain_sphere();
-  Check ck = CHECK_RELYING("sphere_hit_fill", DOC, "sphere_hit_t (its t)");
+  Check ck = CHECK_RELYING("sphere_hit_fill (step 02)", DOC, "sphere_hit_t (its t)");
   double worst = 0.0;
   const char *names[] = {"central, distance/radius 1.1 .. 1e7",
                          "grazing, theta 1e-7 .. 1e-1 rad"};
@@ -307,7 +312,7 @@ Test(stress, t3_refined_sphere_points_within_4_ulps_of_the_surface)
     }
     stress_row("t3_sphere_points", "| %s | %ld | %.3g | %.2f |", names[kind], hits, w_txt, w_rob);
     worst = fmax(worst, w_rob);
-    Check t = CHECK("sphere_hit_t", DOC);
+    Check t = CHECK("sphere_hit_t (step 02)", DOC);
     CHECK_REQUIRE(&t, hits > 10000, "%s rays: only %ld of 20000 hit (most should): fix "
                   "`make test-step 2` first", names[kind], hits);
   }
@@ -322,24 +327,26 @@ static Ray plane_ray(Rng *g, vec3s q, vec3s n, double theta)
   vec3s side = stress_perp(n, g), along = stress_perp(n, g);
   double lat = stress_log10u(g, -4.0, 5.0);
   Ray ray;
-  ray.o = vec_make((float)(q.x + h * n.x + lat * side.x), (float)(q.y + h * n.y + lat * side.y),
-                   (float)(q.z + h * n.z + lat * side.z));
+  ray.o = stress_stored(vec_make((float)(q.x + h * n.x + lat * side.x),
+                                 (float)(q.y + h * n.y + lat * side.y),
+                                 (float)(q.z + h * n.z + lat * side.z)));
   double dx = cos(theta) * along.x - sin(theta) * n.x, dy = cos(theta) * along.y - sin(theta) * n.y,
          dz = cos(theta) * along.z - sin(theta) * n.z, dn = sqrt(dx * dx + dy * dy + dz * dz);
-  ray.d = vec_make((float)(dx / dn), (float)(dy / dn), (float)(dz / dn));
+  ray.d = stress_stored(vec_make((float)(dx / dn), (float)(dy / dn), (float)(dz / dn)));
   return ray;
 }
 
 Test(stress, t3_plane_points_exact_on_axis_planes_down_to_grazing_rays)
 {
+  stress_step(2);
   stress_table("t3_plane_points",
                "Test 3b: plane hits, rays at 1e-7 .. 1 rad to the plane: axis-aligned planes "
                "(hits off the plane) and tilted planes (worst distance in 2^-24 (|p| + |q|))",
                "| planes | hits | textbook | robust |\n|---|---|---|---|");
   long off_rob = 0, off_txt = 0, hits = 0;
   double w_rob = 0.0, w_txt = 0.0;
-  Check axis_ck = CHECK_RELYING("plane_hit_fill", DOC, "plane_hit_t (its t)");
-  Check tilt_ck = CHECK_RELYING("plane_hit_fill", DOC, "plane_hit_t (its t)");
+  Check axis_ck = CHECK_RELYING("plane_hit_fill (step 02)", DOC, "plane_hit_t (its t)");
+  Check tilt_ck = CHECK_RELYING("plane_hit_fill (step 02)", DOC, "plane_hit_t (its t)");
   for (int tilted = 0; tilted < 2; tilted++) {
     for (int k = 0; k < 20000; k++) {
       Rng g = rng_make(4, (uint32_t)tilted, (uint32_t)k);
@@ -383,7 +390,7 @@ Test(stress, t3_plane_points_exact_on_axis_planes_down_to_grazing_rays)
               hits, w_rob);
   CHECK_DONE(&axis_ck);
   CHECK_DONE(&tilt_ck);
-  Check t = CHECK("plane_hit_t", DOC);
+  Check t = CHECK("plane_hit_t (step 02)", DOC);
   CHECK_REQUIRE(&t, hits > 5000, "rays toward axis planes: only %ld of 20000 hit (most "
                 "should): fix `make test-step 2` first", hits);
 }

@@ -22,6 +22,13 @@ typedef struct TraceEvent {
   float t;             /* HIT: its distance */
   vec3s p, n;          /* HIT: the hit point and normal */
   vec3s li, l, c;      /* LIGHT: L_i, toward the light, the term; AREA: c */
+  /* LIGHT: shade_phong_light's arguments for this L_i and l (trace_term),
+   * `term` the function itself (trace_incident); the recorder calls it once
+   * more with them for the term. m NULL: not called for this light. */
+  vec3s (*term)(const Material *m, const Hit *hit, vec3s v, vec3s li, vec3s l);
+  const Material *m;
+  Hit hit;
+  vec3s v;
 } TraceEvent;
 
 /* The events reported since the recorder last read them (it does at each
@@ -69,18 +76,57 @@ static inline void trace_hit(RenderCtx *ctx, const Hit *hit)
   }
 }
 
-/* Light k's term c for the radiance li arriving from the unit direction l at
- * the camera ray's hit; returns c. */
-static inline vec3s trace_light(RenderCtx *ctx, int k, vec3s li, vec3s l, vec3s c)
+/* A light's term is reported in two halves, so that the trace follows
+ * whatever shade_phong does with the step's functions: shade_incident
+ * reports light k's L_i and l (trace_incident), and shade_phong_light,
+ * wherever it is called from, its arguments for that L_i and l
+ * (trace_term); the recorder calls shade_phong_light once more with them
+ * for the term, whatever return its code takes. shade_phong_light has no
+ * ctx: the events of the pixel this thread traces are in trace_term_events
+ * (NULL when off). Both hooks only store: the recorder makes the call. */
+extern _Thread_local struct TraceEvents *trace_term_events;
+
+typedef vec3s (*TraceTermFn)(const Material *m, const Hit *hit, vec3s v, vec3s li, vec3s l);
+
+/* Light k's radiance li arriving from the unit direction l at the camera
+ * ray's hit (shade_incident); term: the step's shade_phong_light. Returns li. */
+static inline vec3s trace_incident(RenderCtx *ctx, int k, vec3s li, vec3s l, TraceTermFn term)
 {
+#ifndef TRACE_COMPILED_OUT
+  trace_term_events = ctx->trace;
+#endif
   if (TRACE_ON(ctx)) {
     TraceEvent *e = trace_slot(ctx, TRACE_EVENT_LIGHT);
     e->light = k;
     e->li = li;
     e->l = l;
-    e->c = c;
+    e->c = glms_vec3_zero();
+    e->term = term;
+    e->m = NULL;
   }
-  return c;
+  return li;
+}
+
+/* shade_phong_light's arguments, first thing in it: kept with the light
+ * trace_incident reported last with this li and l. */
+static inline void trace_term(const Material *m, const Hit *hit, vec3s v, vec3s li, vec3s l)
+{
+#ifndef TRACE_COMPILED_OUT
+  TraceEvents *ev = trace_term_events;
+  if (__builtin_expect(ev != NULL, 0))
+    for (int k = (ev->n < TRACE_EVENTS ? ev->n : TRACE_EVENTS + 1) - 1; k >= 0; k--) {
+      TraceEvent *e = &ev->e[k];
+      if (e->kind == TRACE_EVENT_LIGHT && !e->m && e->li.x == li.x && e->li.y == li.y &&
+          e->li.z == li.z && e->l.x == l.x && e->l.y == l.y && e->l.z == l.z) {
+        e->m = m;
+        e->hit = *hit;
+        e->v = v;
+        break;
+      }
+    }
+#else
+  (void)m, (void)hit, (void)v, (void)li, (void)l;
+#endif
 }
 
 /* Area light k's term c at the hit (the sum over its samples); `unoccluded`

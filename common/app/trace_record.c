@@ -19,6 +19,20 @@ const char *trace_term_name(TraceTerm term)
 
 /* ---------------------------------------------------------------- hooks */
 
+_Thread_local TraceEvents *trace_term_events;
+
+/* Light event e's term: shade_phong_light called once more with the
+ * arguments trace_term kept (nothing reported while it runs). */
+static void light_term(TraceEvent *e)
+{
+  if (e->kind != TRACE_EVENT_LIGHT || !e->m)
+    return;
+  TraceEvents *ev = trace_term_events;
+  trace_term_events = NULL;
+  e->c = e->term(e->m, &e->hit, e->v, e->li, e->l);
+  trace_term_events = ev;
+}
+
 void trace_flush_rays(Trace *t, int depth)
 {
   for (int k = 0; k < t->rays.n; k++) {
@@ -74,6 +88,17 @@ static void capture(Trace *t, uint32_t sample, int k, vec3s c)
   t->n_captured[term] = n + 1;
 }
 
+/* A light event's term for the capture of its material term. A lit light
+ * (n.l > 0, L_i not zero) whose term shade_phong_light never reported
+ * (no arguments kept by trace_term) is captured as NaN, and its lines say
+ * so: shade_phong computed that light's term some other way. */
+static void capture_event(Trace *t, const TraceEvent *e)
+{
+  bool lit = e->kind == TRACE_EVENT_LIGHT && glms_vec3_dot(t->n, e->l) > 0.0f &&
+             !vec_is_zero(e->li);
+  capture(t, e->sample, e->light, lit && !e->m ? glms_vec3_broadcast(NAN) : e->c);
+}
+
 /* The light's diffuse and specular terms, as fields or lines under it. */
 static void light_terms(Trace *t, TraceLine *line, const TraceEvent *e, int depth)
 {
@@ -82,7 +107,10 @@ static void light_terms(Trace *t, TraceLine *line, const TraceEvent *e, int dept
     vec3s c;
     TraceLine *to = t->compact ? line : trace_add(&t->lines, depth, name, TRACE_DOC_LIGHT);
     const char *field = t->compact ? name : "rgb";
-    if (captured(t, term, e->sample, e->light, &c))
+    bool got = captured(t, term, e->sample, e->light, &c);
+    if (got && isnan(c.x)) /* see capture_event */
+      trace_word(to, field, "not reported: shade_phong_light was not called for this light");
+    else if (got)
       trace_vec(to, field, c);
     else
       trace_word(to, field, "not traced with this term alone");
@@ -142,11 +170,12 @@ static void on_area(Trace *t, const TraceEvent *e)
 void trace_drain(Trace *t)
 {
   for (int k = 0; k < t->events.n; k++) {
-    const TraceEvent *e = &t->events.e[k];
+    TraceEvent *e = &t->events.e[k];
+    light_term(e);
     if (e->kind == TRACE_EVENT_HIT)
       on_hit(t, e);
     else if (t->mode == TRACE_CAPTURE)
-      capture(t, e->sample, e->light, e->c);
+      capture_event(t, e);
     else if (t->mode == TRACE_AOV && e->kind == TRACE_EVENT_AREA && e->flag) {
       t->shadow_rays += t->plain.light_samples; /* no shadow ray: all clear */
       t->shadow_clear += t->plain.light_samples;

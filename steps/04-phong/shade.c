@@ -7,14 +7,16 @@
 vec3s shade_incident(const Scene *scene, const Light *light, const Hit *hit,
                      vec3s *l, RenderCtx *ctx)
 {
-  (void)scene;
-  (void)ctx;
   float dist;
-  return light_incident(light, hit->p, hit->p_err, l, &dist);
+  vec3s li = light_incident(light, hit->p, hit->p_err, l, &dist);
+  return trace_incident(ctx, (int)(light - scene->lights), li, *l, shade_phong_light);
 }
 
-vec3s shade_phong_light(const Material *m, const Hit *hit, vec3s v, vec3s li, vec3s l)
+/* inline: a hint that keeps it inlined into the render's loop, though the
+ * tracer calls it too (trace_incident; docs/tracing.md). */
+inline vec3s shade_phong_light(const Material *m, const Hit *hit, vec3s v, vec3s li, vec3s l)
 {
+  trace_term(m, hit, v, li, l); /* --trace, --aov: its arguments */
   vec3s c = glms_vec3_zero();
   /* BEGIN SOLUTION step 04 */
   float n_dot_l = glms_vec3_dot(hit->n, l);
@@ -37,8 +39,7 @@ static vec3s shade_light(const Scene *scene, int k, const Hit *hit, vec3s v, Ren
 {
   vec3s l;
   vec3s li = shade_incident(scene, &scene->lights[k], hit, &l, ctx);
-  vec3s c = shade_phong_light(&scene->materials[hit->inst->material], hit, v, li, l);
-  return trace_light(ctx, k, li, l, c);
+  return shade_phong_light(&scene->materials[hit->inst->material], hit, v, li, l);
 }
 
 vec3s shade_phong(const Scene *scene, const Hit *hit, vec3s eye, RenderCtx *ctx)

@@ -25,12 +25,15 @@ vec3s shade_incident(const Scene *scene, const Light *light, const Hit *hit,
   /* A light behind the surface adds nothing (shade_phong_light skips it): it
    * needs no shadow ray. */
   if (glms_vec3_dot(hit->n, *l) > 0.0f && !shade_visible(scene, hit, *l, dist, ctx))
-    return glms_vec3_zero();
-  return li;
+    li = glms_vec3_zero();
+  return trace_incident(ctx, (int)(light - scene->lights), li, *l, shade_phong_light);
 }
 
-vec3s shade_phong_light(const Material *m, const Hit *hit, vec3s v, vec3s li, vec3s l)
+/* inline: a hint that keeps it inlined into the render's loop, though the
+ * tracer calls it too (trace_incident; docs/tracing.md). */
+inline vec3s shade_phong_light(const Material *m, const Hit *hit, vec3s v, vec3s li, vec3s l)
 {
+  trace_term(m, hit, v, li, l); /* --trace, --aov: its arguments */
   vec3s c = glms_vec3_zero();
   /* BEGIN SOLUTION step 04 */
   float n_dot_l = glms_vec3_dot(hit->n, l);
@@ -53,8 +56,7 @@ static vec3s shade_light(const Scene *scene, int k, const Hit *hit, vec3s v, Ren
 {
   vec3s l;
   vec3s li = shade_incident(scene, &scene->lights[k], hit, &l, ctx);
-  vec3s c = shade_phong_light(&scene->materials[hit->inst->material], hit, v, li, l);
-  return trace_light(ctx, k, li, l, c);
+  return shade_phong_light(&scene->materials[hit->inst->material], hit, v, li, l);
 }
 
 vec3s shade_phong(const Scene *scene, const Hit *hit, vec3s eye, RenderCtx *ctx)
