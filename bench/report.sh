@@ -247,7 +247,7 @@ $(table "$D/trace-off.csv" 2>/dev/null)
 
 Every step's default render (800x600, all cores) by the default build and by
 \`make FAST=0\` (the same pictures without fast/: no index, no shadow views,
-one-pass reader), in turn: whole-process time (s, medians)
+one-pass reader, PNG row by row), in turn: whole-process time (s, medians)
 and the median of the pairs' ratios (FAST=0 / default; above 1, the pack
 gains).
 

@@ -1,14 +1,26 @@
 /* The speed pack behind common/app/pack.h, linked by default (FAST=1):
- * the scene's index (index/), the area lights' shadow views
- * (index/light_view.c), the large scene's reader (reader/). */
+ * the film in huge pages (memory/), the scene's index (index/), the area
+ * lights' shadow views (index/light_view.c), the large scene's reader
+ * (reader/), PNG in parallel bands (png/). */
 #include "app/pack.h"
 
 #include "index/accel.h"
 #include "index/light_view.h"
+#include "memory/huge.h"
+#include "png/bands.h"
 #include "reader/mapped.h"
 #include "reader/pieces.h"
 #include "reader/sphere_line.h"
 #include "sampler.h"
+
+bool pack_film_init(Film *film, int width, int height)
+{
+  float *rgb = huge_zeroed((size_t)width * height * 3 * sizeof *rgb);
+  if (!rgb) /* small, or no memory: film_init says which */
+    return film_init(film, width, height);
+  *film = (Film){.width = width, .height = height, .rgb = rgb};
+  return true;
+}
 
 bool pack_index(Scene *scene)
 {
@@ -53,4 +65,9 @@ bool pack_map(int fd, size_t size, char **text)
 void pack_unmap(char *text, size_t size)
 {
   mapped_close(text, size);
+}
+
+int pack_png(FILE *f, int w, int h, PackRowFn row, const void *picture)
+{
+  return bands_write_png(f, w, h, row, picture) ? 1 : 0;
 }

@@ -187,7 +187,7 @@ int app_run(int argc, char **argv, const Step *step)
            o.aov < 0 ? "" : aov_name((AovKind)o.aov));
   const char *out = o.out_path ? o.out_path : default_out;
   int status = 1;
-  if (film_init(&film, scene.width, scene.height)) {
+  if (pack_film_init(&film, scene.width, scene.height)) {
     if (render_and_save(step, &o, &scene, &set, &film, out))
       status = 0;
     film_free(&film);

@@ -1,11 +1,12 @@
 /* Image files and comparison (step 01): tone map names, atomic writes
  * (temporary file, then rename) with every byte from film_to_byte, PFM by
- * hand, PNG through libpng,
+ * hand, PNG through libpng (or the speed pack's, app/pack.h),
  * JPG/HDR and loading through stb. docs/01-film.md. */
 #include "app/image.h"
 
 #include "film.h"
 #include "app/outfile.h"
+#include "app/pack.h"
 
 #include <errno.h>
 #include <math.h>
@@ -149,6 +150,12 @@ static bool write_png(OutFile *out, const Bytes *b)
   return ok;
 }
 
+/* Row j of the picture a Bytes points to (pack_png's row function). */
+static void picture_row(const void *picture, int j, unsigned char *out)
+{
+  bytes_row(picture, j, out);
+}
+
 /* Encode into `out`; false when the format is unknown or memory is short. */
 static bool encode(OutFile *out, const char *ext, int w, int h, const float *rgb,
                    Tonemap tm)
@@ -166,8 +173,11 @@ static bool encode(OutFile *out, const char *ext, int w, int h, const float *rgb
     free(up);
     return ok != 0;
   }
-  if (strcmp(ext, "png") == 0)
-    return write_png(out, &(Bytes){w, h, rgb, tm});
+  if (strcmp(ext, "png") == 0) {
+    Bytes b = {w, h, rgb, tm};
+    int packed = pack_png(out->f, w, h, picture_row, &b); /* in parallel, when it can */
+    return packed >= 0 ? packed == 1 : write_png(out, &b);
+  }
   unsigned char *px = to_bytes(w, h, rgb, tm);
   if (!px)
     return false;

@@ -1,7 +1,13 @@
-/* The program without the speed pack (make FAST=0): no index, so every
- * query tests every instance in order; every shadow ray traced; every scene
- * read and parsed in one pass. */
+/* The program without the speed pack (make FAST=0): the film as film_init
+ * makes it; no index, so every query tests every instance in order; every
+ * shadow ray traced; every scene read and parsed in one pass; every PNG
+ * written by image.c's libpng rows. */
 #include "app/pack.h"
+
+bool pack_film_init(Film *film, int width, int height)
+{
+  return film_init(film, width, height);
+}
 
 bool pack_index(Scene *scene)
 {
@@ -47,4 +53,14 @@ void pack_unmap(char *text, size_t size)
 {
   (void)text;
   (void)size;
+}
+
+int pack_png(FILE *f, int w, int h, PackRowFn row, const void *picture)
+{
+  (void)f;
+  (void)w;
+  (void)h;
+  (void)row;
+  (void)picture;
+  return -1;
 }

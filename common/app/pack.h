@@ -8,8 +8,14 @@
 
 #include <stdbool.h>
 #include <stddef.h>
+#include <stdio.h>
 #include "app/render.h"
+#include "film.h"
 #include "scene.h"
+
+/* film_init's contract (film.h): a zeroed film of width x height pixels,
+ * freed by film_free; its pixels where they cost least to write. */
+bool pack_film_init(Film *film, int width, int height);
 
 /* Build scene->index, which chooses the instances each query tests, or
  * leave it NULL: the queries then test every instance in order. Call after
@@ -52,5 +58,13 @@ bool pack_lines(struct Parser *p);
  * pack_unmap gives a mapped text back. */
 bool pack_map(int fd, size_t size, char **text);
 void pack_unmap(char *text, size_t size);
+
+/* Row j (top row first) of a picture as its w * 3 bytes, RGB. */
+typedef void (*PackRowFn)(const void *picture, int j, unsigned char *out);
+
+/* Write the PNG of the w x h picture whose rows `row` gives to f: 1 when
+ * written, 0 when it failed (errno, or ENOMEM), -1 when the pack leaves it
+ * to the plain writer. */
+int pack_png(FILE *f, int w, int h, PackRowFn row, const void *picture);
 
 #endif
