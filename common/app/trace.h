@@ -49,7 +49,7 @@ typedef struct TraceEvents {
 #ifdef TRACE_COMPILED_OUT /* make bench's second build (TRACE_OFF=1): no hooks */
 #define TRACE_ON(ctx) ((void)(ctx), 0)
 #else
-#define TRACE_ON(ctx) __builtin_expect((ctx)->trace != NULL, 0)
+#define TRACE_ON(ctx) ((ctx)->trace != NULL)
 #endif
 
 static inline TraceEvent *trace_slot(RenderCtx *ctx, TraceEventKind kind)
@@ -113,7 +113,7 @@ static inline void trace_term(const Material *m, const Hit *hit, vec3s v, vec3s 
 {
 #ifndef TRACE_COMPILED_OUT
   TraceEvents *ev = trace_term_events;
-  if (__builtin_expect(ev != NULL, 0))
+  if (ev != NULL)
     for (int k = (ev->n < TRACE_EVENTS ? ev->n : TRACE_EVENTS + 1) - 1; k >= 0; k--) {
       TraceEvent *e = &ev->e[k];
       if (e->kind == TRACE_EVENT_LIGHT && !e->m && e->li.x == li.x && e->li.y == li.y &&
