@@ -73,6 +73,10 @@ OPT     ?= -O3 $(if $(NATIVE),$(NATIVE_FLAGS)) $(CC_LTO)
 # compiler of another version may warn where these do not: make WERROR= keeps
 # its warnings warnings.
 WERROR  ?= -Werror
+# clang's -Wpedantic flags an `inline` function with external linkage that
+# calls cglm's static functions (the steps' shade_phong_light); its header's
+# plain declaration makes the definition an external one, which C11 allows.
+WARN_FLAGS_clang := -Wno-static-in-inline
 # OpenMP where the compiler has it; without it (or with OPENMP=0) one thread,
 # the same pictures (common/threads.h).
 ifndef OPENMP
@@ -92,7 +96,7 @@ STB_IMPL   := $(if $(STB_LIBS),,1)
 CFLAGS  := -std=c11 $(OPT) -g $(OMP_CFLAGS) $(FP_FLAGS) $(FP_FLAGS_$(CC_KIND)) \
            -D_POSIX_C_SOURCE=200809L $(SYS_CFLAGS) \
            -Wall -Wextra -Wpedantic -Wshadow -Wstrict-prototypes \
-           -Wmissing-prototypes $(WERROR) -MMD -MP -Icommon -Ifast
+           -Wmissing-prototypes $(WARN_FLAGS_$(CC_KIND)) $(WERROR) -MMD -MP -Icommon -Ifast
 # TRACE_OFF=1: the trace hooks compiled out (make bench's comparison build;
 # --trace and --aov then record nothing).
 CFLAGS  += $(if $(TRACE_OFF),-DTRACE_COMPILED_OUT)
