@@ -192,8 +192,8 @@ $(BUILD)/obj/%.o: %.c | $(BUILD)/.deps
 
 # The program around the lessons (command line, scene reader, image files,
 # traces, render loop) has nothing to inline into a pixel function: compiled
-# without LTO, it halves the programs' link (pictures the same; renders of
-# steps 05 and 08 within 2 %, docs/performance.md).
+# without LTO, which shortens the programs' link (pictures the same, renders
+# as fast: docs/performance.md, "Build flags").
 $(BUILD)/obj/common/app/%.o: CFLAGS += $(TEST_OBJ_FLAGS)
 # stb's own code, not ours: its warnings are not the course's.
 $(BUILD)/obj/common/app/stb_impl.o: CFLAGS += -w

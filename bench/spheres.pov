@@ -8,7 +8,7 @@
 // POV-Ray is left-handed: `right -x*...` mirrors it into the project's
 // right-handed world; `angle` is the horizontal field of view; lights fall off
 // as 1/r^2 only with fade_power 2; colours stay linear with assumed_gamma 1
-// and File_Gamma=1.0 on the command line (../shared/PERFORMANCE-NOTES.md).
+// and File_Gamma=1.0 on the command line (bench/run.sh passes it).
 #version 3.7;
 #ifndef (Step) #declare Step = 5; #end
 #ifndef (AreaN) #declare AreaN = 5; #end

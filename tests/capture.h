@@ -1,8 +1,8 @@
 /* stderr sent to a temporary file while a test runs the parser in process,
  * to compare its messages. A sanitizer's report (make sanitize) would go to
- * that file too and the test would end without a word, as in a CI run whose
- * only line was "[FAIL] parse_pieces::...": while stderr is captured, the
- * sanitizers' death callback copies the file to the real stderr first.
+ * that file too and the test would end with its [FAIL] line alone, no word
+ * of why: while stderr is captured, the sanitizers' death callback copies
+ * the file to the real stderr first.
  * docs/reliability.md, "Sanitizers". */
 #ifndef RT_CAPTURE_H
 #define RT_CAPTURE_H

@@ -179,8 +179,8 @@ static bool leaves_plane(const Instance *inst, const Ray *r)
 
 /* The planes first: the floor a ray meets bounds the boxes worth entering.
  * The ray stays in the caller's memory, each test's copy taken from there:
- * held in registers instead, it was rebuilt on the stack piecewise before
- * every test and read back whole, a stalled load per test (docs/performance.md). */
+ * passed by value, it would be rebuilt on the stack piecewise before every
+ * test and read back whole, a stalled load per test (docs/performance.md). */
 static const Instance *accel_closest(const Scene *scene, const Ray *r, float *tmax)
 {
   const Accel *acc = (const Accel *)scene->index;

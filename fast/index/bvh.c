@@ -116,11 +116,11 @@ static void sort_leaf(int *ids, int count)
  * from slot `block` on (the first half's below the pair, then the second
  * half's), its root returned for the caller to place. Built from the leaves
  * up, each ball read once: a node's bounds are its children's. Cheap, and
- * for so few balls as good as the heuristic (the trees' surface-area costs
- * differ by about 0.1 %). A node's axis is the one along which its halves'
- * boxes lie furthest apart (their middles compared), the lower half in the
- * first slot of the pair: the traversal visits the nearer child first by
- * that axis. */
+ * for so few balls about as good as the heuristic (the two trees'
+ * surface-area costs are nearly equal). A node's axis is the one along
+ * which its halves' boxes lie furthest apart (their middles compared), the
+ * lower half in the first slot of the pair: the traversal visits the nearer
+ * child first by that axis. */
 static BvhNode cluster_node(SahBuild *b, Balls balls, int first, int count, int block)
 {
   if (count <= b->leaf_max) { /* the ids in increasing order */

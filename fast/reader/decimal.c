@@ -74,8 +74,8 @@ static const char *digit_run(const char *s, const char *end, uint64_t *v)
  * most to end): *m the digits as an integer, *e10 the power of ten to apply.
  * Returns where the reading stopped, NULL for no such decimal there (no
  * digit, more than 19 significant digits, an exponent with no digit). The
- * digits before the point in a plain loop (scenes write one to three there:
- * eight bytes at a time was slower), those after it by digit_run, the value
+ * digits before the point in a plain loop (scenes write one to three there,
+ * too few for eight bytes at a time), those after it by digit_run, the value
  * in a local: leading zeros add nothing to it, and are only counted apart when
  * there are more than 19 digits in all. */
 static const char *decimal(const char *s, const char *end, bool *neg, uint64_t *m, int *e10)
