@@ -60,4 +60,34 @@ static inline int vec_is_zero(vec3s v)
   return v.x == 0.0f && v.y == 0.0f && v.z == 0.0f;
 }
 
+/* v / |v|, the unit vector along v; (0, 0, 0) for v = 0; NaN components for
+ * an infinite or NaN v. cglm's normalize cannot be relied on here: since
+ * cglm 0.9 it returns (0, 0, 0) for any v shorter than FLT_EPSILON (1.2e-7),
+ * and the scene format accepts directions of length 1e-18. Computed as
+ * v * (1 / sqrt(v.v)), cglm 0.8.8's formula bit for bit, when v.v is in
+ * [2^-100, 2^100]; any other v is first multiplied by the power of two
+ * (exact) that brings its largest component into [0.5, 1), so a tiny or huge
+ * vector comes out as accurate as one of length 1. docs/accuracy.md. */
+static inline vec3s vec_normalize(vec3s v)
+{
+  float n2 = glms_vec3_dot(v, v);
+  if (!(n2 >= 0x1p-100f && n2 <= 0x1p100f)) {
+    float m = vec_max_abs(v);
+    if (m == 0.0f)
+      return glms_vec3_zero();
+    if (isfinite(m)) {
+      int e;
+      frexpf(m, &e);
+      v = vec_make(ldexpf(v.x, -e), ldexpf(v.y, -e), ldexpf(v.z, -e));
+      n2 = glms_vec3_dot(v, v);
+    }
+  }
+  return glms_vec3_scale(v, 1.0f / sqrtf(n2));
+}
+
+/* Every glms_vec3_normalize of the project (the steps' solution regions
+ * included) is vec_normalize: the same unit vectors whatever cglm's version.
+ * cglm's own definition is above (<cglm/struct.h>), untouched. */
+#define glms_vec3_normalize(v) vec_normalize(v)
+
 #endif
