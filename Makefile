@@ -1,6 +1,7 @@
 # Ray-tracing course: build every step, render it, test it, measure it.
 # `make` builds and renders all steps; `make test` runs every test; `make help`
-# lists the other targets. GNU make 4, gcc, Debian packages (installed below).
+# lists the other targets. GNU make 4, gcc or clang, the libraries from
+# pkg-config (tools/deps.sh installs them on Debian as root).
 
 SHELL := /bin/bash
 .DEFAULT_GOAL := all
@@ -35,30 +36,75 @@ TESTS_08-area-lights    := area_light phong
 STRESS_TESTS := $(patsubst tests/%.c,%,$(wildcard tests/stress_*.c))
 
 # ---------------------------------------------------------------- flags
-# No -ffast-math and no fused multiply-add contraction: results must not change
-# with the optimiser's mood (docs/accuracy.md).
-CC      := gcc
-# -flto=auto: link-time optimisation inlines camera_ray, film_sample and the
-# shape tests into each step's pixel function (about 30 % faster, pictures
-# byte-identical; docs/performance.md). Fat objects: tools/ and bench/ link
-# build/libcommon.a with plain gcc, without -flto.
-OPT     ?= -O3 -march=native -flto=auto -ffat-lto-objects
-CFLAGS  := -std=c11 $(OPT) -g -fopenmp -ffp-contract=off -fno-math-errno \
+# The compiler is Make's CC (cc unless given: make CC=clang). tools/deps.sh
+# probes it once per build folder into $(BUILD)/config.mk: gcc or clang, its
+# OpenMP flags, LTO, and the libraries' flags from pkg-config.
+CONFIG := $(BUILD)/config.mk
+# Goals that need no compiler: they run without probing it.
+NO_CONFIG_GOALS := clean help deps bench-deps grade-deps clang-deps valgrind-deps
+ifneq ($(MAKECMDGOALS),)
+  ifeq ($(filter-out $(NO_CONFIG_GOALS),$(MAKECMDGOALS)),)
+    SKIP_CONFIG := 1
+  endif
+endif
+ifndef SKIP_CONFIG
+  -include $(CONFIG)
+endif
+
+# Results must not change with the optimiser's mood (docs/accuracy.md): no
+# -ffast-math, no fused multiply-add contraction, on every compiler. FP_FLAGS_gcc
+# and FP_FLAGS_clang take what one compiler alone needs.
+FP_FLAGS       := -ffp-contract=off -fno-math-errno
+FP_FLAGS_gcc   :=
+FP_FLAGS_clang :=
+# The default build runs on every x86-64 or arm64 machine (no -march); make
+# NATIVE=1 tunes for this CPU (-march=native: a binary that may not run on
+# another machine). gcc adds link-time optimisation with fat objects (CC_LTO):
+# LTO inlines camera_ray, film_sample and the shape tests into each step's
+# pixel function (docs/performance.md); the tests and tools link the same
+# objects without it.
+OPT     ?= -O3 $(if $(NATIVE),-march=native) $(CC_LTO)
+# -Werror where the warnings are known clean (gcc 12 to 14, clang 14); a
+# compiler of another version may warn where these do not: make WERROR= keeps
+# its warnings warnings.
+WERROR  ?= -Werror
+# OpenMP where the compiler has it; without it (or with OPENMP=0) one thread,
+# the same pictures (common/threads.h).
+ifndef OPENMP
+  OPENMP := $(if $(OMP_CFLAGS),1,0)
+endif
+ifeq ($(OPENMP),0)
+  OMP_CFLAGS := -Wno-unknown-pragmas
+  OMP_LIBS   :=
+endif
+# stb as the system ships it: Debian's compiled libstb (pkg-config stb, -lstb),
+# or headers only, compiled in by common/app/stb_impl.c. STB=headers takes the
+# headers even where libstb is; STB_CFLAGS=-I/dir names a folder of them.
+STB_CFLAGS ?= $(STB_CFLAGS_FOUND)
+STB_LIBS   ?= $(if $(filter command,$(origin STB_CFLAGS)),,$(STB_LIBS_FOUND))
+STB_IMPL   := $(if $(STB_LIBS),,1)
+
+CFLAGS  := -std=c11 $(OPT) -g $(OMP_CFLAGS) $(FP_FLAGS) $(FP_FLAGS_$(CC_KIND)) \
            -D_POSIX_C_SOURCE=200809L \
            -Wall -Wextra -Wpedantic -Wshadow -Wstrict-prototypes \
-           -Wmissing-prototypes -Werror -MMD -MP -Icommon
+           -Wmissing-prototypes $(WERROR) -MMD -MP -Icommon
 # TRACE_OFF=1: the trace hooks compiled out (make bench's comparison build;
 # --trace and --aov then record nothing).
 CFLAGS  += $(if $(TRACE_OFF),-DTRACE_COMPILED_OUT)
-# pkg-config runs when a recipe needs it, after the dependency check below.
-PKG_CFLAGS = $(shell pkg-config --cflags cglm stb libpng zlib)
-LDLIBS  := -fopenmp -lpng -lz -lstb -lm
-# Link flags only: with -flto, gcc 12 re-runs its warnings at link time and
-# reports false -Wmaybe-uninitialized / -Wuninitialized on `Hit hit;` in the
-# steps (scene_intersect fills it whenever it returns true; gcc follows a path
-# where instance_hit_fill's switch matches no shape). Each file's compile step
-# keeps both warnings.
-LDFLAGS := -Wno-maybe-uninitialized -Wno-uninitialized
+PKG_CFLAGS = $(LIB_CFLAGS) $(STB_CFLAGS) $(filter -I%,$(TEST_CFLAGS))
+LDLIBS  := $(OMP_LIBS) $(LIB_LIBS) $(STB_LIBS) -lm
+# Every link but the steps' programs: without LTO (the fat objects' code),
+# so that a test or tool links in a moment. gcc 12 with -flto re-runs its
+# warnings at link time and reports false -Wmaybe-uninitialized /
+# -Wuninitialized on `Hit hit;` in the steps (scene_intersect fills it
+# whenever it returns true; gcc follows a path where instance_hit_fill's
+# switch matches no shape): the programs' link leaves them out. Each file's
+# compile step keeps both warnings.
+LDFLAGS := $(if $(CC_LTO),-fno-lto) $(filter -L%,$(TEST_LIBS))
+# The tests' own files: compiled without LTO's second copy (they link without it).
+TEST_OBJ_FLAGS := $(if $(CC_LTO),-fno-lto)
+PROG_LDFLAGS = $(filter-out -fno-lto,$(LDFLAGS)) \
+               $(if $(filter -flto%,$(CFLAGS)),-Wno-maybe-uninitialized -Wno-uninitialized)
 SAN ?=
 # Any report ends the program, so a test that meets one fails. The clang
 # build of make sanitize passes its fuller set (mk/reliability.mk).
@@ -68,48 +114,68 @@ ifneq ($(SAN),)
   LDLIBS  += $(SAN_FLAGS)
 endif
 
+# A change of compiler or flags rebuilds everything: $(BUILD)/.flags holds
+# the last set, and every object depends on it.
+FLAGS_SIG := $(CC) $(CFLAGS) $(PKG_CFLAGS) | $(LDFLAGS) $(LDLIBS)
+ifndef SKIP_CONFIG
+  ifneq ($(FLAGS_SIG),$(shell cat $(BUILD)/.flags 2>/dev/null))
+    $(shell mkdir -p $(BUILD) && printf '%s\n' '$(FLAGS_SIG)' > $(BUILD)/.flags)
+  endif
+endif
+
+$(BUILD)/.flags: ;
+
+# make test-step builds on every core unless make was given -j.
+NPROC = $(shell nproc 2>/dev/null || sysctl -n hw.ncpu 2>/dev/null || echo 2)
+JOBS_FLAG = $(if $(findstring -j,$(MAKEFLAGS)),,-j$(NPROC))
+
+# make print-flags: the flags as shell assignments, for the scripts that
+# compile a tool against $(BUILD)/libcommon.a (cglm's types follow -march).
+BUILD_KIND = $(if $(filter -march=native,$(CFLAGS)),native (make NATIVE=1: -march=native),portable (no -march)), $(CC_KIND)$(if $(filter -flto%,$(CFLAGS)), with LTO)$(if $(filter 0,$(OPENMP)), without OpenMP)
+print-flags:
+	@printf "CC='%s'\nCFLAGS='%s'\nLDFLAGS='%s'\nLDLIBS='%s'\nBUILD_KIND='%s'\n" '$(CC)' \
+	  '$(strip $(filter-out -MMD -MP,$(CFLAGS)) $(PKG_CFLAGS))' '$(strip $(LDFLAGS))' '$(strip $(LDLIBS))' '$(BUILD_KIND)'
+
 # ---------------------------------------------------------------- dependencies
-# Debian packages the build, the tests and the benchmark need. Run as root, the
-# Makefile installs what is missing; otherwise it prints the command to run.
-DEB_BUILD := gcc make pkg-config libc6-dev libstb-dev libcglm-dev libpng-dev zlib1g-dev \
-             libcriterion-dev libmpfr-dev
-DEB_BENCH := gnuplot-nox povray hyperfine
-
-define need_debs
-missing=$$(for p in $(1); do dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null \
-    | grep -q 'install ok installed' || echo $$p; done); \
-if [ -n "$$missing" ]; then \
-  if [ "$$(id -u)" = 0 ]; then \
-    echo "make: installing Debian packages:" $$missing; \
-    apt-get update -qq && DEBIAN_FRONTEND=noninteractive \
-      apt-get install -y -qq --no-install-recommends $$missing >/dev/null \
-      || { echo "make: apt-get install failed"; exit 1; }; \
-  else \
-    echo "make: missing Debian packages. Install them with:"; \
-    echo "  sudo apt-get update && sudo apt-get install -y" $$missing; exit 1; \
-  fi; \
-fi
-endef
-
-$(BUILD)/.deps: Makefile
+# tools/deps.sh check: the build's libraries through pkg-config. As root on
+# Debian/Ubuntu it installs what is missing (apt-get); elsewhere it prints the
+# one install command of the system (dnf, brew, pacman).
+$(BUILD)/.deps: Makefile tools/deps.sh
 	@mkdir -p $(@D)
-	@$(call need_debs,$(DEB_BUILD))
+	@tools/deps.sh check '$(CC)'
 	@touch $@
+
+$(CONFIG): $(BUILD)/.deps tools/deps.sh
+	@tools/deps.sh config '$(CC)' $(STB) > $@.tmp && mv $@.tmp $@
+ifndef SKIP_CONFIG
+  ifneq ($(CONFIG_CC) $(CONFIG_STB),$(CC) $(STB))
+    $(CONFIG): FORCE
+  endif
+endif
+FORCE:
+
+# Debian packages of the optional targets (the benchmark here, grading and
+# the sanitizers in mk/): installed as root, else the apt-get command.
+need_debs = tools/deps.sh debs $(1)
+DEB_BENCH := gnuplot-nox povray hyperfine
 
 deps: $(BUILD)/.deps
 bench-deps:
 	@$(call need_debs,$(DEB_BENCH))
 
 # ---------------------------------------------------------------- common library
-COMMON_SRC := $(wildcard common/*.c common/*/*.c)
+# common/app/stb_impl.c: stb compiled in, where the system has its headers only.
+COMMON_SRC := $(filter-out $(if $(STB_IMPL),,common/app/stb_impl.c),$(wildcard common/*.c common/*/*.c))
 COMMON_OBJ := $(COMMON_SRC:%.c=$(BUILD)/obj/%.o)
 LIBCOMMON  := $(BUILD)/libcommon.a
 
-$(BUILD)/obj/%.o: %.c | $(BUILD)/.deps
+$(BUILD)/obj/%.o: %.c $(BUILD)/.flags | $(BUILD)/.deps
 	@mkdir -p $(@D)
 	@echo "CC $<"
 	@$(CC) $(CFLAGS) $(PKG_CFLAGS) -c $< -o $@
 
+# stb's own code, not ours: its warnings are not the course's.
+$(BUILD)/obj/common/app/stb_impl.o: CFLAGS += -w
 $(LIBCOMMON): $(COMMON_OBJ)
 	@rm -f $@
 	@ar rcs $@ $^
@@ -131,7 +197,7 @@ $(BUILD)/gen/$(1)-scene.c: $(SCENE_$(1)) tools/scene2c.sh
 $(BUILD)/bin/$(1): $$($(1)_OBJ) $(BUILD)/obj/gen/$(1)-scene.o $(LIBCOMMON)
 	@mkdir -p $$(@D)
 	@echo "LD $$@"
-	@$(CC) $(CFLAGS) $(LDFLAGS) $$^ $(LDLIBS) -o $$@
+	@$(CC) $(CFLAGS) $(PROG_LDFLAGS) $$^ $(LDLIBS) -o $$@
 
 $(BUILD)/out/$(1).png: $(BUILD)/bin/$(1)
 	@mkdir -p $$(@D)
@@ -139,19 +205,19 @@ $(BUILD)/out/$(1).png: $(BUILD)/bin/$(1)
 
 $(1)_TOBJ := $$(patsubst %,$(BUILD)/obj/tests/$(1)/test_%.o,$$(TESTS_$(1))) \
              $(BUILD)/obj/tests/$(1)/image_test.o
-$(BUILD)/obj/tests/$(1)/%.o: tests/%.c | $(BUILD)/.deps
+$(BUILD)/obj/tests/$(1)/%.o: tests/%.c $(BUILD)/.flags | $(BUILD)/.deps
 	@mkdir -p $$(@D)
 	@echo "CC $$<  ($(1) test)"
-	@$(CC) $(CFLAGS) $$(PKG_CFLAGS) -Isteps/$(1) -Itests \
+	@$(CC) $(CFLAGS) $(TEST_OBJ_FLAGS) $$(PKG_CFLAGS) $(TEST_CFLAGS) -Isteps/$(1) -Itests \
 	  -DSTEP_NAME='"$(1)"' -DBUILD_DIR='"$(BUILD)"' -c $$< -o $$@
 $(BUILD)/tests/$(1): $$($(1)_TOBJ) $$($(1)_LIB) $(LIBCOMMON) $(BUILD)/bin/$(1)
 	@mkdir -p $$(@D)
 	@echo "LD $$@"
-	@$(CC) $(CFLAGS) $(LDFLAGS) $$(filter %.o %.a,$$^) $(LDLIBS) -lcriterion -lmpfr -lgmp -o $$@
+	@$(CC) $(CFLAGS) $(LDFLAGS) $$(filter %.o %.a,$$^) $(LDLIBS) $(TEST_LIBS) -o $$@
 endef
 $(foreach s,$(PRESENT),$(eval $(call step_rules,$(s))))
 
-$(BUILD)/obj/gen/%.o: $(BUILD)/gen/%.c | $(BUILD)/.deps
+$(BUILD)/obj/gen/%.o: $(BUILD)/gen/%.c $(BUILD)/.flags | $(BUILD)/.deps
 	@mkdir -p $(@D)
 	@$(CC) $(CFLAGS) -c $< -o $@
 
@@ -164,14 +230,14 @@ build: $(BINS)
 
 # ---------------------------------------------------------------- tests
 STRESS_OBJ := $(STRESS_TESTS:%=$(BUILD)/obj/tests/stress/%.o)
-$(BUILD)/obj/tests/stress/%.o: tests/%.c | $(BUILD)/.deps
+$(BUILD)/obj/tests/stress/%.o: tests/%.c $(BUILD)/.flags | $(BUILD)/.deps
 	@mkdir -p $(@D)
 	@echo "CC $<  (stress)"
-	@$(CC) $(CFLAGS) $(PKG_CFLAGS) -Itests -DBUILD_DIR='"$(BUILD)"' -c $< -o $@
+	@$(CC) $(CFLAGS) $(TEST_OBJ_FLAGS) $(PKG_CFLAGS) $(TEST_CFLAGS) -Itests -DBUILD_DIR='"$(BUILD)"' -c $< -o $@
 $(BUILD)/tests/stress: $(STRESS_OBJ) $(LIBCOMMON)
 	@mkdir -p $(@D)
 	@echo "LD $@"
-	@$(CC) $(CFLAGS) $(LDFLAGS) $^ $(LDLIBS) -lcriterion -lmpfr -lgmp -o $@
+	@$(CC) $(CFLAGS) $(LDFLAGS) $^ $(LDLIBS) $(TEST_LIBS) -o $@
 STRESSBIN := $(if $(STRESS_TESTS),$(BUILD)/tests/stress)
 
 # make test-build: what make test runs, built and not run (make -j2
@@ -201,7 +267,7 @@ test-step:
 	@if [ -z "$(STEP_N)" ]; then echo "make test-step: there is no step '$(N)' (steps are 1 .. 8)"; exit 2; fi
 	@if [ -z "$(filter $(STEP_N),$(PRESENT))" ]; then \
 	  echo "make test-step: step $(STEP_N) does not exist yet (no steps/$(STEP_N)/)"; exit 1; fi
-	@$(MAKE) --no-print-directory $(BUILD)/tests/$(STEP_N)
+	@$(MAKE) --no-print-directory $(JOBS_FLAG) $(BUILD)/tests/$(STEP_N)
 	@tests/run.sh --verbose $(BUILD)/tests/$(STEP_N); status=$$?; \
 	  $(REPORT_AFTER_STEP); exit $$status
 

@@ -124,7 +124,9 @@ if [ -s "$D/ratio6.csv" ]; then # pairs in turn (bench/run.sh): their medians
 pairs run in turn, 10^3 then 10^6 spheres ($D/ratio6.csv): medians of 3 taken
 one scene after the other move with a machine whose speed drifts during the run."
 fi
-CC_USED=$(readelf -p .comment build/bin/05-shadows 2>/dev/null | sed -n 's/.*GCC: //p' | head -n1)
+CC_USED=$(readelf -p .comment build/bin/05-shadows 2>/dev/null | grep -o 'clang version [0-9.]*' | head -n1)
+[ -n "$CC_USED" ] ||
+  CC_USED=gcc\ $(readelf -p .comment build/bin/05-shadows 2>/dev/null | sed -n 's/.*GCC: //p' | head -n1)
 all_note="$ALL threads here"
 [ "$ALL" = 2 ] && all_note="this machine has 2 cores: \"all cores\" is the 2-thread row"
 
@@ -134,7 +136,7 @@ cat <<EOF
 
 Written by \`make bench\` (bench/run.sh, bench/report.sh) on $(date -u +%Y-%m-%d) in
 ${total} s, on: ${BENCH_MACHINE:-$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs), $(nproc) cores},
-built with gcc ${CC_USED:-?}, POV-Ray: ${POV:-not installed}. Load average (other
+built with ${CC_USED:-?} (${BENCH_BUILD:-?}), POV-Ray: ${POV:-not installed}. Load average (other
 jobs on the machine) ${LOADS% *} at the start, ${LOADS#* } at the end. Every figure is a
 median over repeated runs in this one run (the CSV files hold min and max);
 the machines are shared and noisy, so compare within the run, not across

@@ -21,10 +21,15 @@ PREBUILT=${BENCH_PREBUILT:-}
 part() { [[ "$PARTS" == *" $1 "* ]]; }
 W=800; H=600
 mkdir -p "$B" "$D" "$REF"
+# The build measured: the Makefile's flags (CC, CFLAGS, LDFLAGS, LDLIBS, and
+# BUILD_KIND: portable, or native with make NATIVE=1), printed and reported.
+eval "$(make --no-print-directory -s print-flags)" || exit 1
+export BENCH_BUILD="$BUILD_KIND"
+log "measuring the $BUILD_KIND build: $CC $CFLAGS"
 if [ -z "$PREBUILT" ]; then
-  CFL="-std=c11 -O2 -Icommon $(pkg-config --cflags cglm stb)"
-  gcc $CFL bench/gen_spheres.c -lm -o "$B/gen_spheres" || exit 1
-  gcc $CFL bench/rmse.c build/libcommon.a -fopenmp -lpng -lz -lstb -lm -o "$B/rmse" || exit 1
+  $CC -std=c11 -O2 bench/gen_spheres.c -lm -o "$B/gen_spheres" || exit 1
+  # shellcheck disable=SC2086
+  $CC $CFLAGS $LDFLAGS bench/rmse.c build/libcommon.a $LDLIBS -o "$B/rmse" || exit 1
 fi
 POV=$(command -v povray || true)
 POV_SCENE=bench/spheres.pov

@@ -2,7 +2,7 @@
 #define _DEFAULT_SOURCE /* madvise */
 #include "pages.h"
 
-#include <omp.h>
+#include "threads.h"
 #include <stdbool.h>
 #include <stdint.h>
 #include <sys/mman.h>

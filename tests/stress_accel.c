@@ -3,7 +3,7 @@
  * sphere_hit_t / plane_hit_t distance; any-hit = some lit shape at t < tmax.
  * The reference is that loop written out here, over random scenes and rays
  * (grazing ones included), for the flat layout and the hierarchy. */
-#include <omp.h>
+#include "threads.h"
 #include <stdlib.h>
 
 #include "accel/accel.h"

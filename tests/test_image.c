@@ -15,7 +15,7 @@
 #include <sys/resource.h>
 #include <sys/stat.h>
 
-#include <omp.h>
+#include "threads.h"
 #include <png.h>
 #include <stb_image.h>
 

@@ -6,7 +6,7 @@
 #include "testfiles.h"
 
 #include <dirent.h>
-#include <omp.h>
+#include "threads.h"
 #include <signal.h>
 #include <stdlib.h>
 #include <sys/resource.h>

@@ -9,7 +9,7 @@
 
 #include <errno.h>
 #include <fcntl.h>
-#include <omp.h>
+#include "threads.h"
 #include <stdlib.h>
 #include <sys/mman.h>
 #include <unistd.h>

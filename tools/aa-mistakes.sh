@@ -6,16 +6,17 @@
 set -euo pipefail
 bin=build/bin
 make --no-print-directory build/bin/07-antialiasing >/dev/null
-# The Makefile's -O3 -march=native: cglm aligns its matrices by instruction
-# set, so Scene's layout must match libcommon's.
-gcc -std=c11 -O3 -march=native -fopenmp -ffp-contract=off -D_POSIX_C_SOURCE=200809L -Wall -Wextra \
-  -Werror -Icommon -Isteps/07-antialiasing $(pkg-config --cflags cglm stb) \
+# The Makefile's flags (make print-flags): cglm aligns its matrices by
+# instruction set, so Scene's layout must match libcommon's.
+eval "$(make --no-print-directory -s print-flags)"
+# shellcheck disable=SC2086
+$CC $CFLAGS $LDFLAGS -Isteps/07-antialiasing \
   tools/aa-mistakes.c steps/07-antialiasing/shade.c build/obj/gen/07-antialiasing-scene.o \
-  build/libcommon.a -lpng -lz -lstb -lm -o $bin/aa-mistakes
-gcc -std=c11 -O3 -march=native -fopenmp -ffp-contract=off -D_POSIX_C_SOURCE=200809L -Wall -Wextra \
-  -Werror -Icommon -Isteps/07-antialiasing $(pkg-config --cflags cglm stb libpng) \
+  build/libcommon.a $LDLIBS -o $bin/aa-mistakes
+# shellcheck disable=SC2086
+$CC $CFLAGS $LDFLAGS -Isteps/07-antialiasing \
   tools/aa-samples.c steps/07-antialiasing/shade.c build/obj/gen/07-antialiasing-scene.o \
-  build/libcommon.a -lpng -lz -lstb -lm -o $bin/aa-samples
+  build/libcommon.a $LDLIBS -o $bin/aa-samples
 mkdir -p docs/img
 for s in grid random jitter sobol; do
   $bin/aa-mistakes points $s 16 docs/img/07-points-$s.png

@@ -9,6 +9,7 @@ bin=build/bin/08-area-lights
 tmp=build/gallery
 mkdir -p "$out" "$tmp"
 size=(--width 320 --height 240 --threads 2 --quiet)
+eval "$(make --no-print-directory -s print-flags)" # CC, CFLAGS, LDFLAGS, LDLIBS
 
 $bin "${size[@]}" -o $out/default.png
 $bin "${size[@]}" --light-samples 1 -o $out/samples-1.png
@@ -26,10 +27,10 @@ mistake() {
   cp steps/08-area-lights/*.[ch] $tmp/$name/
   sed -i "$expr" $tmp/$name/shade.c
   cmp -s steps/08-area-lights/shade.c $tmp/$name/shade.c && { echo "gallery: '$name' changed nothing" >&2; exit 1; }
-  # -march=native as the Makefile: cglm aligns its types (and so Scene) by it.
-  gcc -std=c11 -O3 -march=native -fopenmp -ffp-contract=off -D_POSIX_C_SOURCE=200809L -Icommon -I$tmp/$name \
-    $(pkg-config --cflags cglm stb) $tmp/$name/main.c $tmp/$name/shade.c \
-    build/obj/gen/08-area-lights-scene.o build/libcommon.a -fopenmp -lpng -lz -lstb -lm -o $tmp/$name/bin
+  # The Makefile's flags: cglm aligns its types (and so Scene) by -march.
+  # shellcheck disable=SC2086
+  $CC $CFLAGS $LDFLAGS -Wno-error -I$tmp/$name $tmp/$name/main.c $tmp/$name/shade.c \
+    build/obj/gen/08-area-lights-scene.o build/libcommon.a $LDLIBS -o $tmp/$name/bin
   $tmp/$name/bin "${size[@]}" ${scene:+--scene $scene} -o $out/$name.png
 }
 # Same pattern everywhere: the light samples keyed by seed only, not by pixel.

@@ -10,7 +10,7 @@
 
 #include <limits.h>
 #include <math.h>
-#include <omp.h>
+#include "threads.h"
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>

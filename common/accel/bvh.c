@@ -14,7 +14,7 @@
 #include "accel/bvh.h"
 
 #include <limits.h>
-#include <omp.h>
+#include "threads.h"
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>

@@ -2,7 +2,7 @@
  * cubic grid, a radix sort, runs of neighbours. docs/performance.md. */
 #include "accel/morton.h"
 
-#include <omp.h>
+#include "threads.h"
 #include <stdlib.h>
 #include <string.h>
 

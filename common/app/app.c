@@ -2,7 +2,7 @@
  * scene, render, save, summary. README.md describes the command line. */
 #include "app/app.h"
 
-#include <omp.h>
+#include "threads.h"
 #include <stdio.h>
 #include <string.h>
 
@@ -70,10 +70,10 @@ static void summary(const Step *step, const char *out, const Film *film, int sam
                     const RenderStats *st)
 {
   double mrays = (double)st->rays * 1e-6;
-  printf("%s: %s %dx%d, %d spp, %.2f Mrays in %.3f s (%.1f Mrays/s, %d thread%s)\n",
+  printf("%s: %s %dx%d, %d spp, %.2f Mrays in %.3f s (%.1f Mrays/s, %d thread%s%s)\n",
          step->name, out, film->width, film->height, samples, mrays,
          st->seconds, st->seconds > 0.0 ? mrays / st->seconds : 0.0, st->threads,
-         st->threads == 1 ? "" : "s");
+         st->threads == 1 ? "" : "s", THREADS_BUILD_NOTE);
 }
 
 /* The command line's options other than --trace, --trace-format and --quiet,

@@ -10,7 +10,7 @@
 #include "app/parser_state.h"
 
 #include <errno.h>
-#include <omp.h>
+#include "threads.h"
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>

@@ -4,7 +4,7 @@
  * thread count. docs/01-film.md; docs/performance.md on threads under load. */
 #include "app/render.h"
 
-#include <omp.h>
+#include "threads.h"
 #include <stdio.h>
 #include <stdlib.h>
 #include <unistd.h>
@@ -39,6 +39,9 @@ static void render_tile(const Scene *scene, Film *film, RenderPixelFn pixel,
 
 int render_threads(const RenderSettings *set)
 {
+#ifndef _OPENMP
+  return 1; /* the pragmas below are ignored: one thread, whatever was asked */
+#endif
   int threads = set->threads > 0 ? set->threads : omp_get_max_threads();
   return threads < RENDER_MAX_THREADS ? threads : RENDER_MAX_THREADS;
 }

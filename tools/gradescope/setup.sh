@@ -2,7 +2,8 @@
 # Gradescope's image setup (docs/grading.md, "Gradescope"): runs once, as
 # root, when Gradescope builds the autograder's image from autograder.zip
 # (make gradescope writes it). Installs the Debian/Ubuntu packages through the
-# course Makefile, makes course/ a git checkout (the grader reads git
+# course's own install step, as the Dockerfile does (make grade-deps: make
+# deps, tools/deps.sh, then the grader's), makes course/ a git checkout (the grader reads git
 # ls-files), and builds the grader's base and the hidden scenes' solution
 # renders, so that each submission only builds its own files.
 # AUTOGRADER_ROOT (default /autograder) moves the whole layout, for tests.
