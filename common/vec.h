@@ -85,9 +85,27 @@ static inline vec3s vec_normalize(vec3s v)
   return glms_vec3_scale(v, 1.0f / sqrtf(n2));
 }
 
-/* Every glms_vec3_normalize of the project (the steps' solution regions
- * included) is vec_normalize: the same unit vectors whatever cglm's version.
- * cglm's own definition is above (<cglm/struct.h>), untouched. */
+/* m (v, w): the 4x4 matrix m times the point (w = 1) or direction (w = 0) v,
+ * its first three rows. Each component is summed in one order,
+ * ((m3 w + m2 z) + m1 y) + m0 x, every product and sum rounded: cglm's
+ * mat4_mulv is SIMD, with a fused multiply-add where the compiler targets FMA
+ * (-march=native on most x86-64 CPUs) and another order on arm64 (NEON), so
+ * the same camera gave rays differing in their last bits from machine to
+ * machine. The order is that of cglm's SSE2 code without FMA (the portable
+ * x86-64 build): its pictures are unchanged. docs/accuracy.md. */
+static inline vec3s vec_mat4_mulv3(mat4s m, vec3s v, float w)
+{
+  vec3s r;
+  for (int k = 0; k < 3; k++)
+    r.raw[k] = ((m.raw[3][k] * w + m.raw[2][k] * v.z) + m.raw[1][k] * v.y) + m.raw[0][k] * v.x;
+  return r;
+}
+
+/* Every glms_vec3_normalize and glms_mat4_mulv3 of the project (the steps'
+ * solution regions included) is vec_normalize and vec_mat4_mulv3: the same
+ * results whatever cglm's version, the compiler's flags or the CPU. cglm's
+ * own definitions are above (<cglm/struct.h>), untouched. */
 #define glms_vec3_normalize(v) vec_normalize(v)
+#define glms_mat4_mulv3(m, v, w) vec_mat4_mulv3(m, v, w)
 
 #endif

@@ -71,3 +71,41 @@ Test(vec, glms_vec3_normalize_is_the_projects)
                (double)want.y, (double)want.z, (double)got.x, (double)got.y, (double)got.z);
   }
 }
+
+/* A fixed stream of numbers in [-1, 1) (a 32-bit LCG): the cases below. */
+static float next_unit(uint32_t *s)
+{
+  *s = *s * 1664525u + 1013904223u;
+  return (float)((int32_t)(*s >> 8) - (1 << 23)) * 0x1p-23f;
+}
+
+/* The camera's m (v, w) (step 03's camera_ray): within the rounding of four
+ * products and three sums, 4 x 2^-24 of the sum of the terms' magnitudes,
+ * against long double; and cglm's name is the project's function, whose one
+ * order of operations gives the same bits on every CPU. */
+Test(vec, mat4_mulv3_is_the_product_in_one_order)
+{
+  Check c = CHECK("vec_mat4_mulv3", DOC);
+  uint32_t s = 7;
+  for (int n = 0; n < 1000; n++) {
+    mat4s m;
+    for (int i = 0; i < 4; i++)
+      for (int k = 0; k < 4; k++)
+        m.raw[i][k] = next_unit(&s) * (k == 3 ? 0.0f : 100.0f);
+    vec3s v = vec_make(next_unit(&s), next_unit(&s), next_unit(&s));
+    float w = n % 2 ? 1.0f : 0.0f;
+    vec3s got = vec_mat4_mulv3(m, v, w), cglm_name = glms_mat4_mulv3(m, v, w);
+    for (int k = 0; k < 3; k++) {
+      long double terms[4] = {(long double)m.raw[0][k] * v.x, (long double)m.raw[1][k] * v.y,
+                              (long double)m.raw[2][k] * v.z, (long double)m.raw[3][k] * w};
+      long double exact = terms[0] + terms[1] + terms[2] + terms[3];
+      long double mag = fabsl(terms[0]) + fabsl(terms[1]) + fabsl(terms[2]) + fabsl(terms[3]);
+      CHECK_NEAR(&c, (double)exact, got.raw[k], (double)(4.0L * mag * 0x1p-24L),
+                 "case %d, w = %g: component %d of m (v, w)", n, (double)w, k);
+      CHECK_THAT(&c, memcmp(&got.raw[k], &cglm_name.raw[k], sizeof(float)) == 0,
+                 "case %d: glms_mat4_mulv3 must be vec_mat4_mulv3 (common/vec.h), component %d: "
+                 "%.9g against %.9g", n, k, (double)cglm_name.raw[k], (double)got.raw[k]);
+    }
+  }
+  CHECK_DONE(&c);
+}

@@ -8,7 +8,8 @@
 #
 # Usage (root, on Debian or Ubuntu, the Debian mirror reachable):
 #   tools/platforms.sh [PLATFORM...]    (make platforms; default: all four)
-#     host      this machine: a clang build (build/clang) beside the gcc one
+#     host      this machine: clang (BUILD/clang) and gcc without OpenMP
+#               (BUILD/no-openmp) beside the default gcc build
 #     bookworm  Debian 12 from debootstrap: the README's make, then
 #               make test-step 1 .. 8 (FULL=1: make test)
 #     trixie    Debian 13 from debootstrap: the same
@@ -160,12 +161,13 @@ debian() { # SUITE: the README's two commands (make installs the packages)
 
 arm64() {
   tree_open trixie || return
+  # make's dependency check asks the compiler it builds with for every
+  # library, Criterion and MPFR included.
   local pkgs="make gcc-aarch64-linux-gnu qemu-user pkg-config libc6-dev:arm64 libcglm-dev:arm64"
   pkgs+=" libstb-dev:arm64 libpng-dev:arm64 zlib1g-dev:arm64 libgomp1:arm64"
+  pkgs+=" libcriterion-dev:arm64 libmpfr-dev:arm64"
   check "the arm64 cross tools and libraries" in_tree "dpkg --add-architecture arm64 &&
     apt-get update -qq && apt-get install -y -qq --no-install-recommends $pkgs" || return
-  # The host's packages (make's own check) first, then the steps for arm64.
-  check "make deps" in_tree "make deps" || return
   check "make build, cross-compiled" in_tree "PKG_CONFIG_LIBDIR=/usr/lib/aarch64-linux-gnu/pkgconfig:/usr/share/pkgconfig \
     make BUILD=build/arm64 CC=aarch64-linux-gnu-gcc ${ARM64_MAKE_ARGS:-} build &&
     aarch64-linux-gnu-readelf -h build/arm64/bin/04-phong | grep Machine" || return
@@ -182,6 +184,9 @@ host() {
   check "make CC=clang" make --no-print-directory BUILD="$BUILD/clang" CC=clang ${CLANG_MAKE_ARGS:-} build || return
   check "renders (clang)" renders "$BUILD/clang" "$RESULTS/host-clang" || return
   platform=host-clang compare "$RESULTS/host-clang"
+  check "make OPENMP=0" make --no-print-directory BUILD="$BUILD/no-openmp" OPENMP=0 build || return
+  check "renders (gcc, no OpenMP)" renders "$BUILD/no-openmp" "$RESULTS/host-no-openmp" || return
+  platform=host-no-openmp compare "$RESULTS/host-no-openmp"
 }
 
 [ $# -gt 0 ] || set -- host bookworm trixie arm64
