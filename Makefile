@@ -347,6 +347,7 @@ help:
 	@echo "  make mutants      run the realistic student bugs through every step, write docs/mutants.md"
 	@echo "  make check-mutants  every mutant still applies to the code"
 	@echo "  make check-diffs, check-refs, check-images, check-traces  derived files and citations up to date"
+	@echo "  make platforms    build, test and render in fresh Debian 12/13 trees, arm64 (qemu), clang (root)"
 	@echo "Reliability (docs/reliability.md)"
 	@echo "  make sanitize     the whole suite under AddressSanitizer + UBSan, gcc's and clang's"
 	@echo "  make valgrind     the whole suite under valgrind (an x86-64-v3 build in build/vg)"
