@@ -19,9 +19,10 @@
 #   tools/platforms.sh renders BUILD OUT [RUNNER...]   the renders alone
 # Environment: BUILD (default build), PLATFORMS_ROOT (the Debian trees, kept
 # between runs; default /var/tmp/rt-platforms), MIRROR (default: the first
-# deb.debian.org-style URI of this host's apt sources), FULL=1.
+# deb.debian.org-style URI of this host's apt sources), FULL=1,
+# PLATFORMS_RESULTS (default BUILD/platforms).
 # The trees get a copy of HEAD (git archive): commit what you want tried.
-# Writes BUILD/platforms/: PLATFORM.log (every command's output),
+# Writes PLATFORMS_RESULTS: PLATFORM.log (every command's output),
 # PLATFORM/*.pfm (the renders) and summary.txt (one line per check, also
 # printed). Exit 1 when a check fails.
 set -uo pipefail
@@ -66,7 +67,7 @@ if [ "${1:-}" = renders ]; then
 fi
 
 [ "$(id -u)" = 0 ] || { echo "platforms: run as root (debootstrap, chroot, apt-get)"; exit 2; }
-RESULTS=$BUILD/platforms
+RESULTS=${PLATFORMS_RESULTS:-$BUILD/platforms}
 ROOT=${PLATFORMS_ROOT:-/var/tmp/rt-platforms}
 MIRROR=${MIRROR:-$(grep -rhoE 'https?://deb\.debian\.org/debian/?' /etc/apt/sources.list /etc/apt/sources.list.d 2>/dev/null | head -n 1)}
 MIRROR=${MIRROR:-http://deb.debian.org/debian}
