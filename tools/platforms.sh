@@ -21,7 +21,8 @@
 # between runs; default /var/tmp/rt-platforms), MIRROR (default: the first
 # deb.debian.org-style URI of this host's apt sources), FULL=1,
 # PLATFORMS_RESULTS (default BUILD/platforms).
-# The trees get a copy of HEAD (git archive): commit what you want tried.
+# The trees get a fresh clone of HEAD (what a student has: git and .git):
+# commit what you want tried.
 # Writes PLATFORMS_RESULTS: PLATFORM.log (every command's output),
 # PLATFORM/*.pfm (the renders) and summary.txt (one line per check, also
 # printed). Exit 1 when a check fails.
@@ -113,7 +114,7 @@ compare() {
 }
 
 # The Debian tree SUITE, made with debootstrap the first time, with /proc,
-# /sys and /dev mounted and a fresh copy of HEAD in /root/rt.
+# /sys and /dev mounted and a fresh clone of HEAD in /root/rt.
 tree=
 tree_open() {
   tree=$ROOT/$1
@@ -127,7 +128,8 @@ tree_open() {
   mountpoint -q "$tree/dev" || { mount --rbind /dev "$tree/dev" && mount --make-rslave "$tree/dev"; }
   rm -rf "$tree/root/rt"
   mkdir -p "$tree/root/rt"
-  git archive HEAD | tar -x -C "$tree/root/rt"
+  git clone -q --no-checkout "$top" "$tree/root/rt" &&
+    git -C "$tree/root/rt" checkout -q "$(git rev-parse HEAD)"
 }
 tree_close() {
   [ -n "$tree" ] || return 0
@@ -144,7 +146,7 @@ in_tree() {
 
 debian() { # SUITE: the README's two commands (make installs the packages)
   tree_open "$1" || return
-  check "apt-get install make" in_tree "apt-get update -qq && apt-get install -y -qq make" || return
+  check "apt-get install make git" in_tree "apt-get update -qq && apt-get install -y -qq make git" || return
   check "make" in_tree "make" || return
   say "$platform: $(in_tree "gcc --version | head -n 1; dpkg-query -W libcglm-dev" | tr '\n\t' '; ')"
   if [ -n "${FULL:-}" ]; then
