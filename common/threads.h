@@ -7,11 +7,13 @@
 
 #ifdef _OPENMP
 #include <omp.h>
-/* Appended to the summary line and to --help's --threads. */
+/* The summary line's note after its thread count; --help's default. */
 #define THREADS_BUILD_NOTE ""
+#define THREADS_DEFAULT "all cores"
 #else
 #include <time.h>
-#define THREADS_BUILD_NOTE ", built without OpenMP: one thread"
+#define THREADS_BUILD_NOTE ", built without OpenMP"
+#define THREADS_DEFAULT "one, built without OpenMP"
 static inline int omp_get_max_threads(void) { return 1; }
 static inline int omp_get_num_threads(void) { return 1; }
 static inline int omp_get_thread_num(void) { return 0; }

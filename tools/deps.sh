@@ -23,6 +23,7 @@ set -uo pipefail
 
 # ---------------------------------------------------------------- the system
 system() {
+  [ -z "${DEPS_SYSTEM:-}" ] || { echo "$DEPS_SYSTEM"; return; } # to try another's messages
   case "$(uname -s 2>/dev/null)" in
     Darwin) echo brew; return ;;
     MINGW* | MSYS* | CYGWIN*) echo msys2; return ;;
@@ -279,6 +280,9 @@ config() {
   echo "CONFIG_CC := $cc"
   echo "CONFIG_STB := $stbmode"
   echo "CC_KIND := $kind"
+  echo "CC_MACHINE := $($cc -dumpmachine 2>/dev/null)"
+  # macOS hides madvise and memmem under _POSIX_C_SOURCE unless asked.
+  [ "$(uname -s)" = Darwin ] && echo "SYS_CFLAGS := -D_DARWIN_C_SOURCE"
   echo "CC_LTO := $lto"
   echo "OMP_CFLAGS := ${omp%%|*}"
   echo "OMP_LIBS := ${omp#*|}"

@@ -28,7 +28,7 @@ static void usage(const char *prog, const char *summary, const char *scene)
          "  --light-samples N   samples per area light, 1..%d (step 08)\n"
          "  --sampler NAME      center, grid, random, jitter or sobol (steps 07-08)\n"
          "  --adaptive T        adaptive sampling threshold, 0 = off (steps 07-08)\n"
-         "  --threads N         render threads, 1..%d (default: all cores" THREADS_BUILD_NOTE ")\n"
+         "  --threads N         render threads, 1..%d (default: " THREADS_DEFAULT ")\n"
          "  --seed S            random seed, 0..4294967295 (default 1)\n"
          "  --tonemap NAME      clamp (default), srgb or reinhard\n"
          "  -q, --quiet         no progress bar and no summary line\n"
