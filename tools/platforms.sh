@@ -8,8 +8,9 @@
 #
 # Usage (root, on Debian or Ubuntu, the Debian mirror reachable):
 #   tools/platforms.sh [PLATFORM...]    (make platforms; default: all four)
-#     host      this machine: clang (BUILD/clang) and gcc without OpenMP
-#               (BUILD/no-openmp) beside the default gcc build
+#     host      this machine: clang (BUILD/clang), gcc without OpenMP
+#               (BUILD/no-openmp) and gcc -march=native (BUILD/native)
+#               beside the default gcc build
 #     bookworm  Debian 12 from debootstrap: the README's make, then
 #               make test-step 1 .. 8 (FULL=1: make test)
 #     trixie    Debian 13 from debootstrap: the same
@@ -190,6 +191,9 @@ host() {
   check "make OPENMP=0" make --no-print-directory BUILD="$BUILD/no-openmp" OPENMP=0 build || return
   check "renders (gcc, no OpenMP)" renders "$BUILD/no-openmp" "$RESULTS/host-no-openmp" || return
   platform=host-no-openmp compare "$RESULTS/host-no-openmp"
+  check "make NATIVE=1" make --no-print-directory BUILD="$BUILD/native" NATIVE=1 build || return
+  check "renders (gcc -march=native)" renders "$BUILD/native" "$RESULTS/host-native" || return
+  platform=host-native compare "$RESULTS/host-native"
 }
 
 [ $# -gt 0 ] || set -- host bookworm trixie arm64
