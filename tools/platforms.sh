@@ -134,8 +134,9 @@ tree_open() {
 }
 tree_close() {
   [ -n "$tree" ] || return 0
-  umount -R "$tree/dev" 2>/dev/null
-  umount "$tree/sys" "$tree/proc" 2>/dev/null
+  # Lazily when busy (a process the tests left, e.g. bubblewrap's, just ending).
+  umount -R "$tree/dev" 2>/dev/null || umount -R -l "$tree/dev"
+  umount "$tree/sys" "$tree/proc" 2>/dev/null || umount -l "$tree/sys" "$tree/proc"
   tree=
 }
 trap tree_close EXIT
