@@ -25,7 +25,7 @@ SCENE_08-area-lights  := scenes/area-lights.scene
 
 # Each step's unit tests: tests/test_<name>.c (make test-step N runs them).
 TESTS_01-film           := film export image
-TESTS_02-intersection   := ray sphere plane disc scene
+TESTS_02-intersection   := ray sphere plane disc scene vec
 TESTS_03-camera         := camera parser cli
 TESTS_04-phong          := light phong
 # Steps 05-08 carry step 04's Phong region in their shade.c: they run its tests too.
@@ -415,6 +415,7 @@ help:
 	@echo "  make gradescope   pack the grader for Gradescope ($(BUILD)/gradescope/autograder.zip)"
 	@echo "  make sample-class write the sample class of submissions to $(BUILD)/sample-class"
 	@echo "  make test-grade-slurm, make test-grade-ssh  the sample class through a one-node Slurm / parallel --sshlogin"
+	@echo "  make platforms    build, test and render in fresh Debian 12/13 trees, arm64 (qemu), clang (as root)"
 	@echo "Performance (docs/benchmarks.md, docs/performance.md)"
 	@echo "  make bench        measure speed and error against POV-Ray, write docs/benchmarks.md"
 	@echo "  make bench-accuracy  time step 05's frame, robust vs textbook geometry (docs/accuracy.md)"

@@ -3,6 +3,10 @@
  * docs/04-phong.md, "What you write". */
 #include "check.h"
 
+#include <stdlib.h>
+#include <sys/stat.h>
+
+#include "app/image.h"
 #include "light.h"
 
 #define DOC "docs/04-phong.md, \"What you write\""
@@ -88,4 +92,56 @@ Test(light, point_light_at_the_shaded_point_gives_zero)
             "min_dist = 1e-6: L_i");
   CHECK_THAT(&c, vec_is_finite(l), "the same: l must be finite, got (%g, %g, %g)", l.x, l.y,
              l.z);
+}
+
+/* Step 04's render (64 x 48, .pfm) of a sphere over a floor lit by one
+ * directional light travelling along `dir`; the pixels, the caller frees. */
+static float *directional_render(const char *tag, const char *dir)
+{
+  char scene[256], out[256], cmd[768];
+  snprintf(scene, sizeof scene, BUILD_DIR "/test-out/dir-%s.scene", tag);
+  snprintf(out, sizeof out, BUILD_DIR "/test-out/dir-%s.pfm", tag);
+  mkdir(BUILD_DIR "/test-out", 0755);
+  FILE *f = fopen(scene, "w");
+  cr_assert(f && fprintf(f, "film 64 48\ncamera eye 0 2.2 9 center 0 0.8 0 up 0 1 0 fov 40\n"
+                            "material m diffuse 0.8 0.6 0.4 specular 0.5 0.5 0.5 shininess 32\n"
+                            "plane point 0 0 0 normal 0 1 0 material m\n"
+                            "sphere center 0 1 0 radius 1 material m\n"
+                            "light directional direction %s irradiance 1 1 1\n", dir) > 0 &&
+                fclose(f) == 0, "cannot write %s", scene);
+  remove(out);
+  snprintf(cmd, sizeof cmd, BUILD_DIR "/bin/" STEP_NAME " --scene %s --threads 2 --quiet -o %s",
+           scene, out);
+  cr_assert(system(cmd) == 0, "'%s' failed", cmd);
+  int w, h;
+  float *rgb;
+  cr_assert(image_load(out, &w, &h, &rgb) && w == 64 && h == 48, "cannot read %s", out);
+  return rgb;
+}
+
+/* The scene format accepts directions of length 1e-18 to 1e18 and normalizes
+ * them (docs/scene-format.md, "Limits"): a light travelling along
+ * (0, -1e-8, -0.5e-8) lights the scene as one along (0, -1, -0.5). cglm 0.9's
+ * own normalize makes the short one (0, 0, 0): a picture without its light. */
+Test(light, a_directional_light_of_length_1e_8_lights_as_its_unit_twin)
+{
+  Check c = CHECK_RELYING("vec_normalize (the scene reader's light direction)",
+                          "docs/accuracy.md, \"What the code does, and why\"",
+                          "light_incident, shade_phong_light, shade_phong (step 04)");
+  float *unit = directional_render("unit", "0 -1 -0.5");
+  float *tiny = directional_render("1e-8", "0 -1e-8 -0.5e-8");
+  double worst = 0.0, lit = 0.0;
+  for (int k = 0; k < 64 * 48 * 3; k++) {
+    worst = fmax(worst, fabs((double)tiny[k] - unit[k]));
+    lit = fmax(lit, unit[k]);
+  }
+  CHECK_REQUIRE(&c, lit > 0.1, "the direction (0, -1, -0.5) lights nothing: brightest "
+                "channel %.9g (expected the lit sphere and floor, above 0.1)", lit);
+  /* The two unit vectors may differ in their last bit: a channel moves by a
+   * few 1e-8. Without the light, the lit pixels lose all of it. */
+  CHECK_NEAR(&c, 0.0, worst, 1e-6, "direction (0, -1e-8, -0.5e-8) against (0, -1, -0.5): "
+             "the largest difference of a channel (" BUILD_DIR "/test-out/dir-1e-8.pfm "
+             "against dir-unit.pfm)");
+  free(unit);
+  free(tiny);
 }

@@ -1,0 +1,17 @@
+# make platforms: the course built, tested and rendered on other platforms,
+# every render compared with images/ and with this machine's (tools/platforms.sh;
+# root, the Debian mirror reachable). PLATFORMS picks some of host (gcc and
+# clang here), bookworm and trixie (Debian 12 and 13 from debootstrap: make,
+# make test-step 1 .. 8, FULL=1 make test) and arm64 (cross-built, run under
+# qemu-user). Results in $(BUILD)/platforms/summary.txt.
+PLATFORMS ?= host bookworm trixie arm64
+
+platforms: $(BINS) $(BUILD)/bin/pfmdiff
+	@BUILD=$(BUILD) tools/platforms.sh $(PLATFORMS)
+
+$(BUILD)/bin/pfmdiff: $(BUILD)/obj/tools/pfmdiff.o $(LIBCOMMON)
+	@mkdir -p $(@D)
+	@echo "LD $@"
+	@$(CC) $(CFLAGS) $(LDFLAGS) $^ $(LDLIBS) -o $@
+
+.PHONY: platforms
