@@ -59,9 +59,9 @@ done < <(git ls-files -z)
 # The starter keeps -Werror, except for what a stub leaves unused (parameters,
 # variables, static helpers the solution called): still shown as warnings, they
 # point at what the student has to use.
-sed -i 's/-Werror /-Werror -Wno-error=unused-parameter -Wno-error=unused-variable -Wno-error=unused-function -Wno-error=unused-but-set-variable /' \
+sed -i 's/^\(WERROR *?= *-Werror\)$/\1 -Wno-error=unused-parameter -Wno-error=unused-variable -Wno-error=unused-function -Wno-error=unused-but-set-variable/' \
   "$tmp/tree/Makefile"
-grep -q -- '-Wno-error=unused-parameter' "$tmp/tree/Makefile" || {
+grep -q -- '^WERROR .*-Wno-error=unused-parameter' "$tmp/tree/Makefile" || {
   echo "starter: could not relax -Werror in the starter's Makefile" >&2; exit 1; }
 # Its consecutive-step diffs show the stubs, not the solutions.
 if [ -x "$tmp/tree/tools/diffs.sh" ]; then
