@@ -8,11 +8,12 @@
 #include "capture.h"
 #include "check.h"
 
-#include <omp.h>
+#include "threads.h"
 #include <stdlib.h>
 
 #include "app/parser.h"
 #include "reader/pieces.h"
+#include "same_instance.h"
 
 #define DOC "docs/extending.md, \"Adding a shape\""
 
@@ -87,21 +88,6 @@ static int listed_words(const char *text, const char *after, char words[][24], i
     list += len + (list[len] == ',' ? 2 : 0);
   }
   return n;
-}
-
-/* Two instances alike: shape, material, light and the shape's data (the
- * switch has a case for each ShapeType: -Wswitch). */
-static bool same_instance(const Instance *a, const Instance *b)
-{
-  if (a->shape != b->shape || a->material != b->material || a->light != b->light)
-    return false;
-  switch (a->shape) {
-  case SHAPE_SPHERE: return memcmp(&a->sphere, &b->sphere, sizeof a->sphere) == 0;
-  case SHAPE_PLANE: return memcmp(a->plane, b->plane, sizeof *a->plane) == 0;
-  case SHAPE_QUAD: return memcmp(a->quad, b->quad, sizeof *a->quad) == 0;
-  case SHAPE_DISC: return memcmp(a->disc, b->disc, sizeof *a->disc) == 0;
-  }
-  return false;
 }
 
 Test(large_scene, every_statement_arrives_through_the_large_text_path)

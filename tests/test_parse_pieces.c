@@ -14,21 +14,7 @@
 #include "app/parser_state.h"
 #include "reader/pieces.h"
 #include "reader/sphere_line.h"
-
-/* Two instances with the same shape, compared by the union member it uses
- * (the rest of the union's bytes are unspecified after a member's store). */
-static bool same_instance(const Instance *a, const Instance *b)
-{
-  if (a->shape != b->shape || a->material != b->material || a->light != b->light)
-    return false;
-  switch (a->shape) {
-  case SHAPE_SPHERE: return memcmp(&a->sphere, &b->sphere, sizeof a->sphere) == 0;
-  case SHAPE_PLANE:  return memcmp(a->plane, b->plane, sizeof *a->plane) == 0;
-  case SHAPE_QUAD:   return memcmp(a->quad, b->quad, sizeof *a->quad) == 0;
-  case SHAPE_DISC:   return memcmp(a->disc, b->disc, sizeof *a->disc) == 0;
-  }
-  return false;
-}
+#include "same_instance.h"
 
 static bool same_instances(const Instance *a, const Instance *b, int n)
 {

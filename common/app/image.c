@@ -7,6 +7,7 @@
 #include "film.h"
 #include "app/outfile.h"
 #include "app/pack.h"
+#include "app/png_quiet.h"
 
 #include <errno.h>
 #include <math.h>
@@ -97,20 +98,6 @@ static bool write_pfm(OutFile *out, int w, int h, const float *rgb)
     out_write(out, le, (int)(4 * len));
   }
   return true;
-}
-
-/* libpng's errors come back as a longjmp to png_rows, without libpng's own
- * "libpng error: ..." line: image_save says what failed and why. */
-static void png_quiet_error(png_structp png, png_const_charp message)
-{
-  (void)message;
-  png_longjmp(png, 1);
-}
-
-static void png_quiet_warning(png_structp png, png_const_charp message)
-{
-  (void)png;
-  (void)message;
 }
 
 /* The picture through libpng, row by row, each row filtered by Sub and

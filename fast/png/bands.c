@@ -1,5 +1,6 @@
 /* PNG written in bands of rows compressed at once (png/bands.h). */
 #include "png/bands.h"
+#include "app/png_quiet.h"
 
 #include <stdbool.h>
 #include <stdlib.h>
@@ -74,20 +75,6 @@ static void band_encode(const Picture *b, int j0, int j1, bool first, bool last,
     deflateEnd(&z);
   free(f);
   free(row);
-}
-
-/* libpng's errors come back as a longjmp to png_chunks, without libpng's own
- * "libpng error: ..." line: image_save says what failed and why. */
-static void png_quiet_error(png_structp png, png_const_charp message)
-{
-  (void)message;
-  png_longjmp(png, 1);
-}
-
-static void png_quiet_warning(png_structp png, png_const_charp message)
-{
-  (void)png;
-  (void)message;
 }
 
 /* Signature, IHDR, the bands as IDAT chunks and IEND through libpng (errors
