@@ -20,7 +20,7 @@ FUZZ_SAN     := -fsanitize=address,undefined,float-cast-overflow,float-divide-by
                 -fno-sanitize-recover=all
 FUZZ_CFLAGS   = -std=c11 -O1 -g -fno-omit-frame-pointer -fopenmp -ffp-contract=off \
                 -fno-math-errno -D_POSIX_C_SOURCE=200809L -Wall -Wextra -Wpedantic \
-                -Wshadow -Wstrict-prototypes -Wmissing-prototypes -Werror -MMD -MP -Icommon -Ifast \
+                -Wshadow -Wstrict-prototypes -Wmissing-prototypes $(WARN_FLAGS_clang) -Werror -MMD -MP -Icommon -Ifast \
                 -Itests/fuzz $(FUZZ_SAN) $(PKG_CFLAGS)
 FUZZ_STEP    := steps/08-area-lights
 # Step 08's main, renamed: its app_run call hands the step's description to
