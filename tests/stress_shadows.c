@@ -177,6 +177,8 @@ static L3 ref_pixel(const Scene *sc, LD nx, LD ny, LD coord, bool *amb)
 static void ref_render(const Scene *sc, LD coord, LD jitter, float *lo, float *hi, bool *amb)
 {
   static const int off[5][2] = {{0, 0}, {1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+  /* Rows in parallel: each pixel's band depends on the scene alone. */
+#pragma omp parallel for schedule(dynamic, 4)
   for (int j = 0; j < H; j++) {
     for (int i = 0; i < W; i++) {
       size_t q = (size_t)j * W + i;
