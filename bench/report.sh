@@ -121,8 +121,8 @@ if [ -s "$D/ratio6.csv" ]; then # pairs in turn (bench/run.sh): their medians
   pairs=$(($(wc -l < "$D/ratio6.csv") - 1))
   r6_how="the median ratio of $pairs pairs run in turn ($D/ratio6.csv)"
   pairs_note="The headline's 10^6 row takes the median ratio of $pairs
-pairs run in turn, 10^3 then 10^6 spheres ($D/ratio6.csv): medians of 3 taken
-one scene after the other move with a machine whose speed drifts during the run."
+pairs run in turn, 10^3 then 10^6 spheres ($D/ratio6.csv), since a median per
+scene, taken one scene after the other, moves with a machine whose speed drifts."
 fi
 CC_USED=$(readelf -p .comment build/bin/05-shadows 2>/dev/null | grep -o 'clang version [0-9.]*' | head -n1)
 [ -n "$CC_USED" ] ||

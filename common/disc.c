@@ -2,6 +2,8 @@
  * from the centre. Given code, as the area lights' quad.c. */
 #include "disc.h"
 
+#include "quad.h" /* flat_hit_fill */
+
 Disc disc_make(vec3s center, vec3s normal, float radius)
 {
   Disc d = {.center = center, .normal = glms_vec3_normalize(normal), .radius = radius};
@@ -25,11 +27,5 @@ float disc_hit_t(const Disc *d, Ray r, float tmax)
 
 void disc_hit_fill(const Disc *d, Ray r, float t, Hit *hit)
 {
-  vec3s p = ray_at(r, t);
-  float off = glms_vec3_dot(glms_vec3_sub(p, d->center), d->normal);
-  hit->t = t;
-  hit->p = glms_vec3_sub(p, glms_vec3_scale(d->normal, off));
-  hit->backface = glms_vec3_dot(r.d, d->normal) > 0.0f;
-  hit->n = hit->backface ? glms_vec3_negate(d->normal) : d->normal;
-  hit->p_err = RAY_POINT_ERR * (vec_max_abs(hit->p) + vec_max_abs(d->center));
+  flat_hit_fill(d->center, d->normal, r, t, hit);
 }

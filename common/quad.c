@@ -27,15 +27,20 @@ float quad_hit_t(const Quad *q, Ray r, float tmax)
   return (a >= 0.0f && a <= 1.0f && b >= 0.0f && b <= 1.0f) ? t : INFINITY;
 }
 
-void quad_hit_fill(const Quad *q, Ray r, float t, Hit *hit)
+void flat_hit_fill(vec3s point, vec3s normal, Ray r, float t, Hit *hit)
 {
   vec3s p = ray_at(r, t);
-  float off = glms_vec3_dot(glms_vec3_sub(p, q->corner), q->normal);
+  float off = glms_vec3_dot(glms_vec3_sub(p, point), normal);
   hit->t = t;
-  hit->p = glms_vec3_sub(p, glms_vec3_scale(q->normal, off));
-  hit->backface = glms_vec3_dot(r.d, q->normal) > 0.0f;
-  hit->n = hit->backface ? glms_vec3_negate(q->normal) : q->normal;
-  hit->p_err = RAY_POINT_ERR * (vec_max_abs(hit->p) + vec_max_abs(q->corner));
+  hit->p = glms_vec3_sub(p, glms_vec3_scale(normal, off));
+  hit->backface = glms_vec3_dot(r.d, normal) > 0.0f;
+  hit->n = hit->backface ? glms_vec3_negate(normal) : normal;
+  hit->p_err = RAY_POINT_ERR * (vec_max_abs(hit->p) + vec_max_abs(point));
+}
+
+void quad_hit_fill(const Quad *q, Ray r, float t, Hit *hit)
+{
+  flat_hit_fill(q->corner, q->normal, r, t, hit);
 }
 
 vec3s quad_point(const Quad *q, float a, float b)

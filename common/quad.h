@@ -23,6 +23,11 @@ float quad_hit_t(const Quad *q, Ray r, float tmax);
 /* Fill the hit at distance t (n facing the ray, backface = behind the front). */
 void quad_hit_fill(const Quad *q, Ray r, float t, Hit *hit);
 
+/* The hit of a ray meeting, at distance t, a flat shape (a quad, a disc)
+ * whose plane passes through `point` with unit `normal`: the point projected
+ * back onto the plane, n facing the ray, backface = behind the front. */
+void flat_hit_fill(vec3s point, vec3s normal, Ray r, float t, Hit *hit);
+
 /* The point at parameters (a, b) in [0,1]^2. */
 vec3s quad_point(const Quad *q, float a, float b);
 

@@ -22,8 +22,9 @@ float sphere_hit_t(const Sphere *s, Ray r, float tmax)
   float c = (float)((fx * fx + fy * fy + fz * fz) - (double)s->radius * s->radius);
   /* The discriminant as r^2 - (distance from the centre to the line)^2: the
    * textbook b^2 - c cancels catastrophically for far or small spheres. The
-   * perpendicular f + b d is taken twice (Gram-Schmidt): the second pass
-   * removes what rounding left along d, which would reach r past |f| = 1e6 r.
+   * perpendicular f + b d is projected off d once more (Gram-Schmidt twice):
+   * that removes what rounding left along d, which would reach r past
+   * |f| = 1e6 r.
    * (f above equals the double f rounded once: float subtraction is
    * correctly rounded.) */
   vec3s to_line = glms_vec3_add(f, glms_vec3_scale(r.d, b));

@@ -3,7 +3,7 @@
  * faces, tilted discs against a long-double reference; the statement read
  * into the scene, its errors, the scene file scenes/disc.scene.
  * docs/scene-format.md, "Statements". */
-#include "capture.h"
+#include "parse_capture.h"
 #include "check.h"
 
 #include <stdlib.h>
@@ -135,18 +135,8 @@ Test(disc, statement_into_the_scene)
 /* What parser_load_text prints for `text` (it must fail). */
 static void expect_error(Check *c, const char *text, const char *message)
 {
-  FILE *tmp = tmpfile();
-  cr_assert(tmp);
-  capture_begin(tmp);
-  Scene s;
-  scene_init(&s);
-  bool ok = parser_load_text("t.scene", text, strlen(text), &s);
-  capture_end();
-  scene_free(&s);
-  char got[512] = "";
-  rewind(tmp);
-  got[fread(got, 1, sizeof got - 1, tmp)] = '\0';
-  fclose(tmp);
+  char got[512];
+  bool ok = parse_captured(text, strlen(text), got, sizeof got);
   char want[512];
   snprintf(want, sizeof want, "%s\n", message);
   CHECK_THAT(c, !ok && strcmp(got, want) == 0, "for the scene text\n    %s  expected stderr"

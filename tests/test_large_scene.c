@@ -5,7 +5,7 @@
  * the test wrote. The statements and light types are taken from the parser's
  * own messages, so a statement added to the parser and not to this test
  * fails here. docs/scene-format.md, "Statements"; docs/extending.md. */
-#include "capture.h"
+#include "parse_capture.h"
 #include "check.h"
 
 #include "threads.h"
@@ -65,20 +65,10 @@ static char *scene_text(int blocks, size_t *len)
  * line, `after` what the message says before its list). */
 static int listed_words(const char *text, const char *after, char words[][24], int max)
 {
-  FILE *tmp = tmpfile();
-  cr_assert(tmp);
-  capture_begin(tmp);
-  Scene s;
-  scene_init(&s);
-  bool ok = parser_load_string("t.scene", text, &s);
-  capture_end();
-  scene_free(&s);
-  char msg[512] = "";
-  rewind(tmp);
-  msg[fread(msg, 1, sizeof msg - 1, tmp)] = '\0';
-  fclose(tmp);
+  char msg[512];
+  bool ok = parse_captured(text, strlen(text), msg, sizeof msg);
   const char *list = strstr(msg, after);
-  cr_assert(!ok && list, "parser_load_string: expected a message with '%s' for '%s', got %s",
+  cr_assert(!ok && list, "parser_load_text: expected a message with '%s' for '%s', got %s",
             after, text, msg);
   list += strlen(after);
   int n = 0;
