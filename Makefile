@@ -13,26 +13,19 @@ STEPS := 01-film 02-intersection 03-camera 04-phong 05-shadows 06-ambient \
          07-antialiasing 08-area-lights
 PRESENT := $(filter $(STEPS),$(notdir $(wildcard steps/[0-9][0-9]-*)))
 
-# Each step's default scene (compiled into its binary; none for 01-film).
-SCENE_01-film         := scenes/film.scene
-SCENE_02-intersection := scenes/spheres.scene
-SCENE_03-camera       := scenes/spheres.scene
-SCENE_04-phong        := scenes/spheres.scene
-SCENE_05-shadows      := scenes/spheres.scene
-SCENE_06-ambient      := scenes/ambient.scene
-SCENE_07-antialiasing := scenes/antialiasing.scene
-SCENE_08-area-lights  := scenes/area-lights.scene
-
-# Each step's unit tests: tests/test_<name>.c (make test-step N runs them).
-TESTS_01-film           := film export image
-TESTS_02-intersection   := ray sphere plane disc scene vec
-TESTS_03-camera         := camera parser cli
-TESTS_04-phong          := light phong
-# Steps 05-08 carry step 04's Phong region in their shade.c: they run its tests too.
-TESTS_05-shadows        := shadows shadows_lecture phong
-TESTS_06-ambient        := ambient phong
-TESTS_07-antialiasing   := sampler antialiasing phong
-TESTS_08-area-lights    := area_light phong
+# Each step's manifest, steps/NN-name/step.mk (docs/instructors.md, "A step's
+# manifest"): its KEY = value lines read here as NN-name.KEY (the scene
+# compiled into its program, NN-name.SCENE; its unit tests tests/test_NAME.c,
+# NN-name.TESTS; ...). tools/manifest.sh reads the same files for the shell
+# tools and writes the header of the step's Step fields.
+MANIFEST_KEYS := SUMMARY FEATURES SAMPLER ADAPTIVE SCENE TESTS IMAGE_SIZE IMAGE_ARGS IMAGE_TOL \
+                 IMAGE_TERMS TRACE_ARGS
+define read_manifest
+include steps/$(1)/step.mk
+$$(foreach k,$$(MANIFEST_KEYS),$$(eval $(1).$$(k) := $$$$($$(k)))$$(eval undefine $$(k)))
+$$(foreach k,$$(filter TRACE_%,$$(.VARIABLES)),$$(eval undefine $$(k)))
+endef
+$(foreach s,$(PRESENT),$(eval $(call read_manifest,$(s))))
 STRESS_TESTS := $(patsubst tests/%.c,%,$(wildcard tests/stress_*.c))
 
 # ---------------------------------------------------------------- flags
@@ -211,9 +204,17 @@ $(1)_OBJ := $$($(1)_SRC:%.c=$(BUILD)/obj/%.o)
 $(1)_LIB := $$(filter-out %/main.o,$$($(1)_OBJ))
 $(BUILD)/obj/steps/$(1)/%.o: CFLAGS += -Isteps/$(1)
 
-$(BUILD)/gen/$(1)-scene.c: $(SCENE_$(1)) tools/scene2c.sh
+$(BUILD)/gen/$(1)-scene.c: $($(1).SCENE) tools/scene2c.sh steps/$(1)/step.mk
 	@mkdir -p $$(@D)
-	@tools/scene2c.sh $(SCENE_$(1)) > $$@
+	@tools/scene2c.sh $($(1).SCENE) > $$@
+
+# main.c's Step fields (STEP_MANIFEST) and the image test's reference size,
+# options and tolerance, from the manifest.
+$(BUILD)/gen/$(1)/step_manifest.h: steps/$(1)/step.mk tools/manifest.sh
+	@mkdir -p $$(@D)
+	@tools/manifest.sh header $(1) > $$@.tmp && mv $$@.tmp $$@
+$(BUILD)/obj/steps/$(1)/main.o: CFLAGS += -I$(BUILD)/gen/$(1) -include step_manifest.h
+$(BUILD)/obj/steps/$(1)/main.o: $(BUILD)/gen/$(1)/step_manifest.h
 
 $(BUILD)/bin/$(1): $$($(1)_OBJ) $(BUILD)/obj/gen/$(1)-scene.o $(LIBCOMMON)
 	@mkdir -p $$(@D)
@@ -224,12 +225,13 @@ $(BUILD)/out/$(1).png: $(BUILD)/bin/$(1)
 	@mkdir -p $$(@D)
 	@$(BUILD)/bin/$(1) -o $$@
 
-$(1)_TOBJ := $$(patsubst %,$(BUILD)/obj/tests/$(1)/test_%.o,$$(TESTS_$(1))) \
+$(1)_TOBJ := $$(patsubst %,$(BUILD)/obj/tests/$(1)/test_%.o,$$($(1).TESTS)) \
              $(BUILD)/obj/tests/$(1)/image_test.o
+$(BUILD)/obj/tests/$(1)/image_test.o: $(BUILD)/gen/$(1)/step_manifest.h
 $(BUILD)/obj/tests/$(1)/%.o: tests/%.c | $(BUILD)/.deps
 	@mkdir -p $$(@D)
 	@echo "CC $$<  ($(1) test)"
-	@$(CC) $(CFLAGS) $(TEST_OBJ_FLAGS) $$(PKG_CFLAGS) $(TEST_CFLAGS) -Isteps/$(1) -Itests \
+	@$(CC) $(CFLAGS) $(TEST_OBJ_FLAGS) $$(PKG_CFLAGS) $(TEST_CFLAGS) -Isteps/$(1) -I$(BUILD)/gen/$(1) -Itests \
 	  -DSTEP_NAME='"$(1)"' -DBUILD_DIR='"$(BUILD)"' -c $$< -o $$@
 $(BUILD)/tests/$(1): $$($(1)_TOBJ) $$($(1)_LIB) $(LIBCOMMON) $(BUILD)/bin/$(1)
 	@mkdir -p $$(@D)
