@@ -319,24 +319,17 @@ sanitize-gcc:
 	$(MAKE) BUILD=build/san SAN=1 OPT=-O1 test
 
 # ---------------------------------------------------------------- images, diffs
-# Reference images: each step's default scene at the reference size, with the
-# image test's options (tools/images.sh). Only on purpose: they are what the
-# image tests compare against (make check-images says when they are stale).
-images: $(BINS)
-	@tools/images.sh write $(BUILD) $(PRESENT)
+# The reference images, traces, diffs and the docs' pictures are derived
+# files: make regen (mk/regen.mk) rewrites those that changed.
 
 # The pictures of shadow and ambient mistakes in docs/05-shadows.md and
-# docs/06-ambient.md: tools/mistakes.c renders them (on purpose only).
+# docs/06-ambient.md: tools/mistakes.c renders them (make regen, through
+# tools/docimg.sh).
 $(BUILD)/bin/mistakes: $(BUILD)/obj/tools/mistakes.o $(BUILD)/obj/gen/05-shadows-scene.o \
                        $(LIBCOMMON)
 	@mkdir -p $(@D)
 	@echo "LD $@"
 	@$(CC) $(CFLAGS) $(LDFLAGS) $^ $(LDLIBS) -o $@
-mistakes: $(BUILD)/bin/mistakes $(BUILD)/bin/05-shadows $(BUILD)/bin/06-ambient
-	@tools/mistakes.sh $(BUILD)/bin
-
-diffs:
-	@tools/diffs.sh write $(PRESENT)
 check-diffs:
 	@tools/diffs.sh check $(PRESENT)
 
@@ -378,7 +371,8 @@ check:
 	echo "make check: every stage passed"
 
 # The files derived from the sources are up to date, every citation exists.
-check-derived: check-diffs check-refs check-mutants check-images check-traces
+# A stale one says "run make regen".
+check-derived: check-diffs check-refs check-mutants check-images check-traces check-docimg
 .PHONY: check check-derived
 
 help:
@@ -400,7 +394,7 @@ help:
 	@echo "  make print-flags  the compiler and flags in use"
 	@echo "For instructors (docs/instructors.md)"
 	@echo "  make check        make test, then every check of the course, stage by stage:"
-	@echo "    make check-derived   check-diffs, check-refs, check-mutants, check-images, check-traces"
+	@echo "    make check-derived   check-diffs, check-refs, check-mutants, check-images, check-traces, check-docimg"
 	@echo "    make check-report    the report in headless Chromium"
 	@echo "    make test-grade      grade the sample class and check every verdict, the pages, Gradescope"
 	@echo "    make check-starter   play a student through the starter, step by step, then make test"
@@ -421,18 +415,19 @@ help:
 	@echo "Performance (docs/benchmarks.md, docs/performance.md)"
 	@echo "  make bench        measure speed and error against POV-Ray, write docs/benchmarks.md"
 	@echo "  make bench-accuracy  time step 05's frame, robust vs textbook geometry (docs/accuracy.md)"
-	@echo "Generated files (on purpose only)"
-	@echo "  make images       regenerate the reference images in images/"
-	@echo "  make traces       rewrite the reference traces tests/traces/"
-	@echo "  make diffs        write docs/diffs/NN-name.diff (each step against the previous)"
-	@echo "  make mistakes, make trace-mistakes  the pictures and traces of the docs' mistakes"
+	@echo "Derived files (docs/instructors.md, \"Derived files\")"
+	@echo "  make regen        rebuild every derived file, write those that changed, list the places to re-read"
+	@echo "                    (REGEN_BENCH=1: make bench too); steps/NN-name/step.mk is each step's manifest"
+	@echo "  make images, make traces, make diffs, make docimg  one part of make regen: images/, tests/traces/,"
+	@echo "                    docs/diffs/, docs/img/"
+	@echo "  make trace-mistakes  the trace lines of the docs' mistakes (their pictures: make docimg)"
 	@echo "  make clean        remove $(BUILD)/"
 
 starter:
 	@tools/starter.sh $(BUILD)/starter $(N)
 
-.PHONY: all build deps bench-deps test test-build stress test-step sanitize sanitize-gcc images diffs \
-        check-diffs bench bench-accuracy clean help starter mistakes
+.PHONY: all build deps bench-deps test test-build stress test-step sanitize sanitize-gcc \
+        check-diffs bench bench-accuracy clean help starter
 
 # Each tool's rules (fuzzing, grading, region checks, ...) in a file of its own.
 include $(wildcard mk/*.mk)

@@ -87,8 +87,9 @@ $(BUILD)/bin/report-check: $(BUILD)/obj/tools/report-check.o $(LIBCOMMON)
 	@echo "LD $@"
 	@$(CC) $(CFLAGS) $(LDFLAGS) $^ $(LDLIBS) -o $@
 
-# The pictures and trace lines of the step docs' "Seeing the mistake"
-# sections (tools/trace-mistakes.sh; on purpose only, several minutes).
+# The trace lines of the step docs' "Seeing the mistake" sections
+# (tools/trace-mistakes.sh; on purpose only, minutes; their pictures, which
+# land in build/ here, are make regen's, through tools/docimg.sh).
 trace-mistakes: $(BINS)
-	@tools/trace-mistakes.sh $(BUILD)
+	@OUT=$(BUILD)/trace-mistakes-img tools/trace-mistakes.sh $(BUILD)
 .PHONY: trace-mistakes
