@@ -14,17 +14,15 @@ src=$1 written=${2:-}
 show=8   # places shown per kind; the rest counted
 
 nw=$(grep -c . <<<"$written")
-echo "* $src"
-if [ "$nw" -gt 0 ]; then
-  echo "    rewritten from it: $(head -n 6 <<<"$written" | paste -sd' ')$([ "$nw" -gt 6 ] && echo " ... ($nw files)")"
-fi
-if git diff --quiet HEAD -- "$src" 2>/dev/null; then
-  echo "    unchanged since the last commit: the code moved what was rewritten; nothing to re-read"
+from=""
+[ "$nw" -gt 0 ] && from=": rewrote $(head -n 6 <<<"$written" | paste -sd' ')$([ "$nw" -gt 6 ] && echo " ... ($nw files)")"
+# The changed lines, as they were (the words and numbers the copies still hold).
+old=$(git diff -U0 HEAD -- "$src" 2>/dev/null | sed -n 's/^-\([^-]\)/\1/p' | grep -v '^[[:space:]]*#')
+if [ -z "$old" ]; then
+  echo "* $src (no line changed since the last commit, but comments or added lines)$from"
   exit 0
 fi
-# The changed lines, as they were (the words and numbers the copies still hold).
-old=$(git diff -U0 HEAD -- "$src" | sed -n 's/^-\([^-]\)/\1/p' | grep -v '^[[:space:]]*#')
-[ -n "$old" ] || { echo "    only lines added: nothing to re-read"; exit 0; }
+echo "* $src$from"
 echo "    changed lines (before): $(head -n 3 <<<"$old" | sed 's/  */ /g' | paste -sd'|' | sed 's/|/ | /g')"
 
 # The words: "the NAME" of a material, "the NAME SHAPE" of the objects using it,

@@ -59,7 +59,7 @@ source_of() {
       if [[ $opts =~ --scene\ ([^ ]+) ]]; then echo "${BASH_REMATCH[1]}"
       else "$here/manifest.sh" get "$s" SCENE; fi ;;
     docs/img/*) awk -F'\t' -v f="$f" '$1 == f { print $2 }' "$REGEN_DIR/docimg.sources" 2>/dev/null ;;
-    docs/diffs/*) s=${f#docs/diffs/}; echo "steps/${s%.diff}" ;;
+    docs/diffs/*) ;;   # from the steps' code: no scene to name
     *) echo "(its generator's sources)" ;;
   esac
 }
@@ -72,16 +72,22 @@ else
   sed 's/^regen: /  /' "$log"
 fi
 # The sources: of what was written, and every scene changed since the last commit.
-{
-  while read -r _ _ f _; do source_of "$f"; done < "$log"
-  git diff --name-only HEAD -- 'scenes/*.scene' 'steps/*/step.mk' 'tests/traces/*.scene' 2>/dev/null
-} | awk 'NF && !seen[$0]++' > "$REGEN_DIR/sources"
-if [ -s "$REGEN_DIR/sources" ]; then
+while read -r _ _ f _; do printf '%s\t%s\n' "$(source_of "$f")" "$f"; done < "$log" > "$REGEN_DIR/from"
+# The sources whose lines changed since the last commit: the places to re-read.
+changed=$(git diff -U0 HEAD -- 'scenes/*.scene' 'steps/*/step.mk' 'tests/traces/*.scene' 2>/dev/null |
+          awk '/^diff --git/ { f = $4; sub(/^b\//, "", f) } /^-[^-]/ && !/^-[ \t]*#/ && f { print f; f = "" }')
+untouched=$(cut -f1 "$REGEN_DIR/from" | awk -v c="$changed" '
+  BEGIN { n = split(c, a, "\n"); for (k = 1; k <= n; k++) skip[a[k]] = 1 } NF && !seen[$0]++ && !skip[$0]')
+if [ -n "$untouched" ]; then
+  echo
+  echo "Derived from a source unchanged since the last commit (the code moved them; nothing to re-read):"
+  sed 's/^/  /' <<<"$untouched" | paste -sd' ' | fold -s -w 100
+fi
+if [ -n "$changed" ]; then
   echo
   echo "Derived from -> the hand-written places that name what changed (re-read them):"
   while IFS= read -r src; do
-    written=$(while read -r _ _ f _; do [ "$(source_of "$f")" = "$src" ] && echo "$f"; done < "$log")
-    "$here/regen-places.sh" "$src" "$written"
-  done < "$REGEN_DIR/sources"
+    "$here/regen-places.sh" "$src" "$(awk -F'\t' -v s="$src" '$1 == s { print $2 }' "$REGEN_DIR/from")"
+  done <<<"$changed"
 fi
 exit $failed

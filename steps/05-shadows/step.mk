@@ -13,6 +13,7 @@ ADAPTIVE = 0
 # The default scene, compiled into the program.
 SCENE = scenes/spheres.scene
 # The unit tests, tests/test_NAME.c, that make test-step 5 runs.
+# (phong: the step carries step 04's Phong region in its shade.c.)
 TESTS = shadows shadows_lecture phong
 
 # The reference image images/05-shadows.png: the default scene at WIDTH HEIGHT with
@@ -25,9 +26,9 @@ IMAGE_ARGS  =
 IMAGE_TERMS = ambient diffuse specular
 IMAGE_TOL   = 1.5 0.001 16
 
-# The reference traces tests/traces/05-shadows/X_Y.json (make trace-step 5 X Y):
-# TRACE_X_Y = [more options] | what the pixel shows; X from the left, Y from
-# the top; every one rendered with TRACE_ARGS.
+# The reference traces (make trace-step 5 X Y), a file per pixel in
+# tests/traces/05-shadows/: TRACE_X_Y = [more options] | what the pixel shows
+# (X from the left, Y from the top), each rendered with TRACE_ARGS.
 TRACE_ARGS = --width 320 --height 240
 TRACE_155_80 = | the top of the red sphere, lit by both lights: its shadow rays must not hit the sphere they start on
 TRACE_197_170 = | the floor just outside the white sphere's shadow: both shadow rays clear

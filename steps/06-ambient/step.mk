@@ -13,6 +13,7 @@ ADAPTIVE = 0
 # The default scene, compiled into the program.
 SCENE = scenes/ambient.scene
 # The unit tests, tests/test_NAME.c, that make test-step 6 runs.
+# (phong: the step carries step 04's Phong region in its shade.c.)
 TESTS = ambient phong
 
 # The reference image images/06-ambient.png: the default scene at WIDTH HEIGHT with
@@ -25,9 +26,9 @@ IMAGE_ARGS  =
 IMAGE_TERMS = ambient diffuse specular
 IMAGE_TOL   = 1.5 0.001 16
 
-# The reference traces tests/traces/06-ambient/X_Y.json (make trace-step 6 X Y):
-# TRACE_X_Y = [more options] | what the pixel shows; X from the left, Y from
-# the top; every one rendered with TRACE_ARGS.
+# The reference traces (make trace-step 6 X Y), a file per pixel in
+# tests/traces/06-ambient/: TRACE_X_Y = [more options] | what the pixel shows
+# (X from the left, Y from the top), each rendered with TRACE_ARGS.
 TRACE_ARGS = --width 320 --height 240
 TRACE_277_14 = | the point light's own sphere: P / t^2
 TRACE_210_170 = | inside the white sphere's shadow: the ambient term alone

@@ -13,6 +13,7 @@ ADAPTIVE = 0.05
 # The default scene, compiled into the program.
 SCENE = scenes/antialiasing.scene
 # The unit tests, tests/test_NAME.c, that make test-step 7 runs.
+# (phong: the step carries step 04's Phong region in its shade.c.)
 TESTS = sampler antialiasing phong
 
 # The reference image images/07-antialiasing.png: the default scene at WIDTH HEIGHT with
@@ -25,9 +26,9 @@ IMAGE_ARGS  =
 IMAGE_TERMS = ambient diffuse specular
 IMAGE_TOL   = 1.5 0.001 16
 
-# The reference traces tests/traces/07-antialiasing/X_Y.json (make trace-step 7 X Y):
-# TRACE_X_Y = [more options] | what the pixel shows; X from the left, Y from
-# the top; every one rendered with TRACE_ARGS.
+# The reference traces (make trace-step 7 X Y), a file per pixel in
+# tests/traces/07-antialiasing/: TRACE_X_Y = [more options] | what the pixel shows
+# (X from the left, Y from the top), each rendered with TRACE_ARGS.
 TRACE_ARGS = --width 320 --height 240
 TRACE_127_100 = | the red sphere's silhouette: corners and centre disagree, the squares are cut in four down to the leaves
 TRACE_250_200 = | the floor: corners and centre agree, the pixel is not cut

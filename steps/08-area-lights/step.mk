@@ -13,6 +13,7 @@ ADAPTIVE = 0
 # The default scene, compiled into the program.
 SCENE = scenes/area-lights.scene
 # The unit tests, tests/test_NAME.c, that make test-step 8 runs.
+# (phong: the step carries step 04's Phong region in its shade.c.)
 TESTS = area_light phong
 
 # The reference image images/08-area-lights.png: the default scene at WIDTH HEIGHT with
@@ -25,9 +26,9 @@ IMAGE_ARGS  = --samples 16 --light-samples 256 --adaptive 0.05
 IMAGE_TERMS = ambient diffuse specular
 IMAGE_TOL   = 2 0.001 16
 
-# The reference traces tests/traces/08-area-lights/X_Y.json (make trace-step 8 X Y):
-# TRACE_X_Y = [more options] | what the pixel shows; X from the left, Y from
-# the top; every one rendered with TRACE_ARGS.
+# The reference traces (make trace-step 8 X Y), a file per pixel in
+# tests/traces/08-area-lights/: TRACE_X_Y = [more options] | what the pixel shows
+# (X from the left, Y from the top), each rendered with TRACE_ARGS.
 TRACE_ARGS = --width 320 --height 240
 TRACE_160_20 = | the area light's front face: L = P / A
 TRACE_96_160 = | the red sphere's soft shadow: some of the light's samples blocked
