@@ -51,8 +51,8 @@ scratch_make() {
     >"$tree/build/make.log" 2>&1
 }
 
-# The step folders of TREE (01-film ...), in order.
-scratch_steps() { (cd "$1/steps" && ls -d [0-9][0-9]-* | sort); }
+# The step folders of TREE that have a manifest (step.mk): 01-film ..., in order.
+scratch_steps() { (cd "$1/steps" && ls -d [0-9][0-9]-*/step.mk | sed "s|/step.mk||" | sort); }
 
 # The name of the step numbered NN in TREE (01 -> 01-film).
 scratch_step_name() { (cd "$1/steps" && ls -d "$2"-* 2>/dev/null | head -n 1); }
