@@ -66,11 +66,12 @@ void sphere_hit_fill(const Sphere *s, Ray r, float t, Hit *hit)
     rel = glms_vec3_negate(r.d);
     len = 1.0f;
   }
-  vec3s n_out = glms_vec3_scale(rel, 1.0f / len);
+  /* Scaled to the radius: p re-projected onto the sphere, its error a few
+   * ulps of |c| + r whatever t was (docs/accuracy.md). */
+  rel = glms_vec3_scale(rel, s->radius / len);
+  vec3s n_out = glms_vec3_scale(rel, 1.0f / s->radius);
   hit->t = t;
-  /* Re-projected onto the sphere: the error left is a few ulps of |c| + r
-   * whatever t was (docs/accuracy.md). */
-  hit->p = glms_vec3_add(s->center, glms_vec3_scale(n_out, s->radius));
+  hit->p = glms_vec3_add(s->center, rel);
   hit->backface = glms_vec3_dot(n_out, r.d) > 0.0f;
   hit->n = hit->backface ? glms_vec3_negate(n_out) : n_out;
   hit->p_err = RAY_POINT_ERR * (vec_max_abs(s->center) + s->radius);
