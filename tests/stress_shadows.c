@@ -325,7 +325,10 @@ static const char *blame_pixel(Scene *sc, int q, char *why, size_t size)
     }
   }
   L3 at = add(o, mul(l3(r.d), (LD)h.t)), off = sub(l3(h.p), at);
-  LD gap = sqrtl(dot(off, off)), allowed = 3.0L * h.p_err + 8.0L * 0x1p-24L * h.t;
+  /* p's coordinates are rounded to ulps of themselves (an axis plane's hit
+   * has p_err = 0 and the plane's coordinate exactly, the others rounded). */
+  LD gap = sqrtl(dot(off, off)),
+     allowed = 3.0L * h.p_err + 8.0L * 0x1p-24L * (vec_max_abs(h.p) + h.t * dlen);
   if (!(gap <= allowed)) {
     snprintf(why, size, "p is %.3Lg from the ray's point at t, p_err %.3g", gap, h.p_err);
     return h.inst->shape == SHAPE_SPHERE ? "sphere_hit_fill" : "plane_hit_fill";
