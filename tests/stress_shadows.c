@@ -291,8 +291,8 @@ static Count compare(const float *img, const float *lo, const float *hi, const b
  * camera ray through the pixel centre (camera_ray is checked for each
  * scene) meets the scene; its t must be within 16 ulps of the exact root for
  * that ray, the normal within 16 x 2^-24 (1 + |o - c| / r) of the direction of
- * (o - c) + t d (test_sphere's bound), and p within p_err of the ray's point
- * at t. When all hold, the hit is right and the shadow ray's start is to
+ * (o - c) + t d (test_sphere's bound), and p within 3 p_err and the
+ * rounding of its own coordinates of the ray's point at t. When all hold, the hit is right and the shadow ray's start is to
  * blame. Returns the function at fault, "" for ray_spawn, shade_visible, and
  * in *why what was off. */
 static const char *blame_pixel(Scene *sc, int q, char *why, size_t size)
