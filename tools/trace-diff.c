@@ -13,9 +13,10 @@
  *   the quarters in another order);
  * - an area light's samples (`light K area`: shadow rays, blocked, diffuse,
  *   specular) are compared as means over the pixel's camera samples, within
- *   4 standard errors of the spread between them: another valid sampling of
- *   the light (which edge gets which coordinate, another pattern) moves each
- *   camera sample's value, not their mean. The pixel's totals after them
+ *   4 standard errors of the differences between the same camera samples of
+ *   both traces: another valid sampling of the light (which edge gets which
+ *   coordinate, another pattern) moves each camera sample's value, not their
+ *   mean. The pixel's totals after them
  *   (terms, colour, bytes) get the same allowance. The sample count is
  *   compared exactly.
  *
@@ -205,8 +206,9 @@ typedef struct Stat {
   const TraceLine *line; /* the first reference line it appears on */
   int at;                /* that line's index */
   const char *field;
-  int n, m[2];
+  int n, m[2], pairs;
   double sum[2][3], sq[2][3];
+  double dsum[3], dsq[3]; /* the differences of matched camera samples */
 } Stat;
 
 typedef struct Stats {
@@ -238,6 +240,28 @@ static void stats_add(Stats *st, int side, const TraceLine *l, int at)
   }
 }
 
+/* The difference of a matched pair of lines (same camera sample): what the
+ * sampling of the light alone moved, the pixel's own variation left out. */
+static void stats_pair(Stats *st, const TraceLine *r, const TraceLine *g)
+{
+  for (int k = 0; k < r->n_fields && k < g->n_fields; k++) {
+    const TraceField *fr = &r->f[k], *fg = &g->f[k];
+    if (!sampled_field(r, fr) || fr->n == 0 || fr->n != fg->n)
+      continue;
+    for (int q = 0; q < st->n; q++) {
+      Stat *x = &st->s[q];
+      if (strcmp(x->line->key, r->key) || strcmp(x->field, fr->name))
+        continue;
+      x->pairs++;
+      for (int c = 0; c < fr->n && c < x->n; c++) {
+        double d = fg->v[c] - fr->v[c];
+        x->dsum[c] += d;
+        x->dsq[c] += d * d;
+      }
+    }
+  }
+}
+
 /* Mean and variance of the mean of side `side`, channel c. */
 static void stat_mean(const Stat *x, int side, int c, double *mean, double *var_mean)
 {
@@ -248,15 +272,20 @@ static void stat_mean(const Stat *x, int side, int c, double *mean, double *var_
 }
 
 /* What the means of x may differ by, channel c: 4 standard errors of the
- * camera samples' spread, the line tolerance, and one for a count (shadow
- * rays, blocked). */
+ * differences between matched camera samples (each pair shares its camera
+ * ray, so only the light's sampling moves it), the line tolerance, and one
+ * for a count (shadow rays, blocked). */
 static double stat_allowed(const Stat *x, int c, Tolerance tol)
 {
   double m0, v0, m1, v1;
   stat_mean(x, 0, c, &m0, &v0);
   stat_mean(x, 1, c, &m1, &v1);
+  int m = x->pairs;
+  double dm = m ? x->dsum[c] / m : 0.0;
+  double var = m > 1 ? fmax(0.0, (x->dsq[c] - m * dm * dm) / (m - 1)) : 0.0;
   bool count = x->n == 1;
-  return 4.0 * sqrt(v0 + v1) + tol.abs + tol.rel * fmax(fabs(m0), fabs(m1)) + (count ? 1.0 : 0.0);
+  return 4.0 * sqrt(m ? var / m : 0.0) + tol.abs + tol.rel * fmax(fabs(m0), fabs(m1)) +
+         (count ? 1.0 : 0.0);
 }
 
 /* The channel of x whose means differ beyond stat_allowed, -1 when none. */
@@ -333,6 +362,8 @@ static Parting compare_runs(const TraceLines *r, const int *rs, int nr, const Tr
         match = j;
     if (match >= 0) {
       used[match] = true;
+      for (int k = 0; k < rs[i + 1] - rs[i]; k++)
+        stats_pair(st, &r->line[rs[i] + k], &g->line[gs[match] + k]);
       continue;
     }
     /* None matches: show it against the student's sample in its place, or
@@ -426,8 +457,9 @@ static void explain(const TraceFile *ref, const TraceFile *got, Parting p, Toler
       }
       printf(")\n");
     }
-    printf("  (means agree when within 4 standard errors of the spread between camera "
-           "samples, here %g in channel %d)\n", stat_allowed(x, c < 0 ? 0 : c, tol), c + 1);
+    printf("  (means agree when within 4 standard errors of the differences between the "
+           "same camera samples, here %g in channel %d)\n", stat_allowed(x, c < 0 ? 0 : c, tol),
+           c + 1);
     printf("  read %s\n", x->line->doc);
     return;
   }
