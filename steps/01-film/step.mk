@@ -26,8 +26,9 @@ IMAGE_TERMS =
 IMAGE_TOL   = 1.5 0.001 16
 
 # The reference traces (make trace-step 1 X Y), a file per pixel in
-# tests/traces/01-film/: TRACE_X_Y = [more options] | what the pixel shows
-# (X from the left, Y from the top), each rendered with TRACE_ARGS.
+# tests/traces/01-film/: TRACE_X_Y = [more options] | what the pixel shows,
+# as its trace shows it (X from the left, Y from the top), each rendered with
+# TRACE_ARGS.
 TRACE_ARGS =
 TRACE_10_10 = | the top left quadrant: green (j counts from the bottom)
 TRACE_200_100 = | the bottom right quadrant: blue

@@ -26,8 +26,9 @@ IMAGE_TERMS =
 IMAGE_TOL   = 1.5 0.001 16
 
 # The reference traces (make trace-step 2 X Y), a file per pixel in
-# tests/traces/02-intersection/: TRACE_X_Y = [more options] | what the pixel shows
-# (X from the left, Y from the top), each rendered with TRACE_ARGS.
+# tests/traces/02-intersection/: TRACE_X_Y = [more options] | what the pixel shows,
+# as its trace shows it (X from the left, Y from the top), each rendered with
+# TRACE_ARGS.
 TRACE_ARGS = --width 320 --height 240
 TRACE_47_150 = | the green sphere one pixel inside its silhouette: its normal as colour
 TRACE_230_160 = | the right half: the white sphere's distance t as grey

@@ -26,8 +26,9 @@ IMAGE_TERMS =
 IMAGE_TOL   = 1.5 0.001 16
 
 # The reference traces (make trace-step 3 X Y), a file per pixel in
-# tests/traces/03-camera/: TRACE_X_Y = [more options] | what the pixel shows
-# (X from the left, Y from the top), each rendered with TRACE_ARGS.
+# tests/traces/03-camera/: TRACE_X_Y = [more options] | what the pixel shows,
+# as its trace shows it (X from the left, Y from the top), each rendered with
+# TRACE_ARGS.
 TRACE_ARGS = --width 320 --height 240
 TRACE_127_100 = | the red sphere one pixel inside its left silhouette
 TRACE_160_110 = | the red sphere facing the camera

@@ -26,8 +26,9 @@ IMAGE_TERMS = ambient diffuse specular
 IMAGE_TOL   = 1.5 0.001 16
 
 # The reference traces (make trace-step 4 X Y), a file per pixel in
-# tests/traces/04-phong/: TRACE_X_Y = [more options] | what the pixel shows
-# (X from the left, Y from the top), each rendered with TRACE_ARGS.
+# tests/traces/04-phong/: TRACE_X_Y = [more options] | what the pixel shows,
+# as its trace shows it (X from the left, Y from the top), each rendered with
+# TRACE_ARGS.
 TRACE_ARGS = --width 320 --height 240
 TRACE_171_99 = | the highlight on the red sphere: the specular term
 TRACE_140_130 = | the red sphere where both lights are behind the surface: n.l < 0, nothing added

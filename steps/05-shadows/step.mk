@@ -27,8 +27,9 @@ IMAGE_TERMS = ambient diffuse specular
 IMAGE_TOL   = 1.5 0.001 16
 
 # The reference traces (make trace-step 5 X Y), a file per pixel in
-# tests/traces/05-shadows/: TRACE_X_Y = [more options] | what the pixel shows
-# (X from the left, Y from the top), each rendered with TRACE_ARGS.
+# tests/traces/05-shadows/: TRACE_X_Y = [more options] | what the pixel shows,
+# as its trace shows it (X from the left, Y from the top), each rendered with
+# TRACE_ARGS.
 TRACE_ARGS = --width 320 --height 240
 TRACE_155_80 = | the top of the red sphere, lit by both lights: its shadow rays must not hit the sphere they start on
 TRACE_197_170 = | the floor just outside the white sphere's shadow: both shadow rays clear

@@ -27,8 +27,9 @@ IMAGE_TERMS = ambient diffuse specular
 IMAGE_TOL   = 1.5 0.001 16
 
 # The reference traces (make trace-step 6 X Y), a file per pixel in
-# tests/traces/06-ambient/: TRACE_X_Y = [more options] | what the pixel shows
-# (X from the left, Y from the top), each rendered with TRACE_ARGS.
+# tests/traces/06-ambient/: TRACE_X_Y = [more options] | what the pixel shows,
+# as its trace shows it (X from the left, Y from the top), each rendered with
+# TRACE_ARGS.
 TRACE_ARGS = --width 320 --height 240
 TRACE_277_14 = | the point light's own sphere: P / t^2
 TRACE_210_170 = | inside the white sphere's shadow: the ambient term alone

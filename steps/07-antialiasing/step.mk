@@ -27,8 +27,9 @@ IMAGE_TERMS = ambient diffuse specular
 IMAGE_TOL   = 1.5 0.001 16
 
 # The reference traces (make trace-step 7 X Y), a file per pixel in
-# tests/traces/07-antialiasing/: TRACE_X_Y = [more options] | what the pixel shows
-# (X from the left, Y from the top), each rendered with TRACE_ARGS.
+# tests/traces/07-antialiasing/: TRACE_X_Y = [more options] | what the pixel shows,
+# as its trace shows it (X from the left, Y from the top), each rendered with
+# TRACE_ARGS.
 TRACE_ARGS = --width 320 --height 240
-TRACE_127_100 = | the red sphere's silhouette: corners and centre disagree, the squares are cut in four down to the leaves
-TRACE_250_200 = | the floor: corners and centre agree, the pixel is not cut
+TRACE_125_100 = | the red sphere's left silhouette over the floor: corners and centre disagree, the pixel is cut in four and the quarters the edge crosses again, down to the leaves (35 samples)
+TRACE_250_200 = | the floor: corners and centre agree, the pixel is not cut (5 samples)

@@ -27,9 +27,10 @@ IMAGE_TERMS = ambient diffuse specular
 IMAGE_TOL   = 2 0.001 16
 
 # The reference traces (make trace-step 8 X Y), a file per pixel in
-# tests/traces/08-area-lights/: TRACE_X_Y = [more options] | what the pixel shows
-# (X from the left, Y from the top), each rendered with TRACE_ARGS.
+# tests/traces/08-area-lights/: TRACE_X_Y = [more options] | what the pixel shows,
+# as its trace shows it (X from the left, Y from the top), each rendered with
+# TRACE_ARGS.
 TRACE_ARGS = --width 320 --height 240
 TRACE_160_20 = | the area light's front face: L = P / A
-TRACE_96_160 = | the red sphere's soft shadow: some of the light's samples blocked
-TRACE_60_140 = | the green sphere's shadow on the floor: every light sample blocked
+TRACE_96_160 = | the floor in the red sphere's soft shadow (about 1/7 of the area light hidden) and the gold sphere's shadow from the directional light
+TRACE_60_140 = | the green sphere's shadow on the floor: the whole area light hidden, and the directional light
