@@ -219,7 +219,7 @@ static Checks checks_make(const Kind *k)
 {
   return (Checks){CHECK(k->hit_t_name, k->doc), CHECK(k->fill_name, k->doc),
                   CHECK(k->bounds_name, k->doc),
-                  CHECK_RELYING(k->fill_name, k->doc, "its p_err and the hit test"),
+                  CHECK(k->fill_name, k->doc),
                   CHECK("scene_instance_hit_t",
                         "docs/extending.md, \"Adding a shape\" (the SHAPE_REGISTRY line)"),
                   0, 0};
@@ -247,15 +247,15 @@ static void checks_done(const Kind *k, Checks *ck)
             ck->skipped, ck->cases);
 }
 
-/* The ray's words: "a front ray (d.n = -0.35) at (u 0.13, v 0.42) of <case>;
- * o (..), d (..)". */
+/* The ray's words: "a front ray at (u 0.13, v 0.42) of <case> (o (..), d (..),
+ * d.n -0.35)". */
 static const char *ray_words(char *buf, size_t size, const char *side, long double dn,
                              long double u, long double v, const Case *c, Ray r)
 {
   snprintf(buf, size,
-           "%s ray (d.n = %.3Lg) at (u %.2Lg, v %.2Lg) of %s;\n  the ray: o (%.9g, %.9g, "
-           "%.9g), d (%.9g, %.9g, %.9g)",
-           side, dn, u, v, c->what, r.o.x, r.o.y, r.o.z, r.d.x, r.d.y, r.d.z);
+           "%s ray at (u %.2Lg, v %.2Lg) of %s (o (%.9g, %.9g, %.9g), d (%.9g, %.9g, "
+           "%.9g), d.n %.3Lg)",
+           side, u, v, c->what, r.o.x, r.o.y, r.o.z, r.d.x, r.d.y, r.d.z, dn);
   return buf;
 }
 
