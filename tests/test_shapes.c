@@ -242,8 +242,8 @@ static void checks_done(const Kind *k, Checks *ck)
    * reference cannot follow is a shape it cannot check. */
   cr_expect(ck->skipped * 10 <= ck->cases,
             "the shape conformance suite: %d of %d rays had no long-double reference "
-            "(name_surface must be smooth in u, v)\n  read docs/extending.md, \"The "
-            "conformance suite\"",
+            "(name_surface must be smooth in u, v)\n"
+            "  read docs/extending.md, \"The conformance suite\"",
             ck->skipped, ck->cases);
 }
 
