@@ -22,7 +22,7 @@ typedef enum ShapeType { SHAPE_REGISTRY(SHAPE_ENUM_) SHAPE_COUNT } ShapeType;
  * (the sphere: `Sphere sphere`); a larger one where the scene keeps it
  * (`const Plane *plane`: the scene's copy, scene_keep; a quad's is its area
  * light's, Scene.lights[light].quad), so that every instance stays as small
- * as a sphere's. The member is named as the shape (SHAPE_REGISTRY' STORE). */
+ * as a sphere's. The member is named as the shape (SHAPE_REGISTRY's STORE column). */
 #define SHAPE_MEMBER_(NAME, name, Type, STORE, DOC) SHAPE_MEMBER_##STORE(Type, name)
 typedef struct Instance {
   ShapeType shape;

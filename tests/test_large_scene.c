@@ -26,7 +26,10 @@
 static int example_line(char *out, size_t size, const char *example, int k)
 {
   bool defines = strncmp(example, "material ", 9) == 0;
-  char line[256];
+  char line[512];
+  cr_assert(strlen(example) < sizeof line - 32, "parser_statement_example: expected an "
+            "example line under %zu bytes, got %zu: %s", sizeof line - 32, strlen(example),
+            example);
   int n = 0;
   for (const char *w = example; *w;) {
     size_t len = strcspn(w, " ");

@@ -102,7 +102,8 @@ enum { N_SCALES = sizeof SCALES / sizeof *SCALES };
 
 /* Orientations: along an axis (a flat shape's hits then snap exactly), in a
  * coordinate plane, and general. */
-static const float AXES[][3] = {{0, 0, 1}, {0.6f, 0, 0.8f}, {0.26726124f, -0.53452248f, 0.80178373f}};
+static const float AXES[][3] = {
+    {0, 0, 1}, {0.6f, 0, 0.8f}, {0.26726124f, -0.53452248f, 0.80178373f}};
 enum { N_AXES = sizeof AXES / sizeof *AXES };
 
 /* Surface parameters aimed at (inside every shape: u, v in (0.1, 0.8)). */
