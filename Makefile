@@ -26,6 +26,14 @@ $$(foreach k,$$(MANIFEST_KEYS),$$(eval $(1).$$(k) := $$$$($$(k)))$$(eval undefin
 $$(foreach k,$$(filter TRACE_%,$$(.VARIABLES)),$$(eval undefine $$(k)))
 endef
 $(foreach s,$(PRESENT),$(eval $(call read_manifest,$(s))))
+
+# The shapes of the registry (common/shapes.h, one X(NAME, name, ...) line
+# each) that have a test of their own, tests/test_<name>.c: the word SHAPES
+# in a manifest's TESTS stands for them (step 02 runs them, beside the
+# conformance suite, tests/test_shapes.c, that checks all).
+SHAPE_NAMES := $(shell sed -n 's/^ *X.[A-Z0-9_]*, *\([a-z0-9_]*\),.*/\1/p' common/shapes.h)
+SHAPE_TESTS := $(foreach s,$(SHAPE_NAMES),$(if $(wildcard tests/test_$(s).c),$(s)))
+$(foreach s,$(PRESENT),$(eval $(s).TESTS := $(patsubst SHAPES,$(SHAPE_TESTS),$($(s).TESTS))))
 STRESS_TESTS := $(patsubst tests/%.c,%,$(wildcard tests/stress_*.c))
 
 # ---------------------------------------------------------------- flags

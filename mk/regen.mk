@@ -7,10 +7,12 @@
 
 # The generators of other derived files, run by make regen after its own
 # parts: make targets, each rewriting a file only when its content changes
-# and printing "regen: wrote FILE" for each file it writes (make regen lists
-# those lines). The shapes' expected messages and fuzzing dictionary, and
-# the mutants' fingerprints, go here when their generators exist.
-REGEN_HOOKS :=
+# and printing "regen: wrote FILE" (or "TOOL: rewrote FILE") for each file it
+# writes (make regen lists those lines). regen-statements: the lists of
+# statements in the expected messages, tests/statements.h and the fuzzing
+# dictionary (mk/shapes.mk). The mutants' fingerprints go here when their
+# generator exists.
+REGEN_HOOKS := regen-statements
 
 # What the parts run: the steps' programs, the picture comparison, the trace
 # comparison, the docs' pictures' programs (tools/docimg.sh).

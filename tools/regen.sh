@@ -7,7 +7,8 @@
 # The environment: REGEN_ONLY="diffs images traces docimg" (a part of them:
 # make images, make traces, make diffs, make docimg), REGEN_BENCH=1 (make bench
 # too: docs/benchmarks.md), REGEN_HOOKS (make targets of other generators, from
-# mk/regen.mk; each prints "regen: wrote FILE" for a file it writes).
+# mk/regen.mk; each prints "regen: wrote FILE", or "TOOL: rewrote FILE", for a
+# file it writes).
 # Its own parts, in order:
 #   diffs   docs/diffs/NN-name.diff          tools/diffs.sh write (text: byte for byte)
 #   images  images/NN-name[.TERM].png       tools/images.sh write (any pixel)
@@ -27,7 +28,9 @@ parts=${REGEN_ONLY:-diffs images traces docimg}
 run() {
   local part=$1 st; shift
   echo "regen: $part"
-  "$@" 2>&1 | tee -a "$log.raw" | { grep --line-buffered '^regen: \(wrote\|removed\) ' >> "$log" || true; }
+  # A hook's "TOOL: rewrote FILE" counts as "regen: wrote FILE".
+  "$@" 2>&1 | sed -u 's/^[^ ]*: rewrote /regen: wrote /' | tee -a "$log.raw" |
+    { grep --line-buffered '^regen: \(wrote\|removed\) ' >> "$log" || true; }
   st=${PIPESTATUS[0]}
   grep -v '^regen: \(wrote\|removed\) ' "$log.raw" | sed 's/^/  /'; : > "$log.raw"
   [ "$st" = 0 ] || { echo "regen: $part failed (exit $st)"; failed=1; }

@@ -13,7 +13,8 @@ ADAPTIVE = 0
 # The default scene, compiled into the program.
 SCENE = scenes/spheres.scene
 # The unit tests, tests/test_NAME.c, that make test-step 2 runs.
-TESTS = ray sphere plane disc scene vec
+# (SHAPES: the own test of every shape of the registry, common/shapes.h.)
+TESTS = ray SHAPES scene vec bounds shapes
 
 # The reference image images/02-intersection.png: the default scene at WIDTH HEIGHT with
 # these options (besides --threads 2 --quiet); the Phong terms drawn alone
