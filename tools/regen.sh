@@ -84,7 +84,7 @@ untouched=$(cut -f1 "$REGEN_DIR/from" | awk -v c="$changed" '
 if [ -n "$untouched" ]; then
   echo
   echo "Derived from a source unchanged since the last commit (the code moved them; nothing to re-read):"
-  sed 's/^/  /' <<<"$untouched" | paste -sd' ' | fold -s -w 100
+  paste -sd' ' <<<"$untouched" | fold -s -w 96 | sed 's/^/  /'
 fi
 if [ -n "$changed" ]; then
   echo
