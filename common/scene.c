@@ -23,12 +23,7 @@ void scene_free(Scene *scene)
 {
   free(scene->materials);
   free(scene->lights);
-  for (int k = 0; k < scene->n_kept; k++)
-    free(scene->kept[k]);
-  free(scene->kept);
   free(scene->instances);
-  if (scene->index)
-    scene->index->destroy(scene->index);
   scene_init(scene);
 }
 
@@ -59,27 +54,6 @@ bool scene_add_material(Scene *scene, const Material *m)
 bool scene_add_light(Scene *scene, const Light *light)
 {
   return push((void **)&scene->lights, &scene->n_lights, sizeof *light, light);
-}
-
-const void *scene_keep(Scene *scene, const void *shape, size_t size)
-{
-  void *copy = malloc(size);
-  if (!copy) {
-    fprintf(stderr, "scene: out of memory\n");
-    return NULL;
-  }
-  if (!reserve((void **)&scene->kept, scene->n_kept, 1, sizeof *scene->kept)) {
-    free(copy);
-    return NULL;
-  }
-  memcpy(copy, shape, size);
-  scene->kept[scene->n_kept++] = copy;
-  return copy;
-}
-
-const Plane *scene_add_plane(Scene *scene, const Plane *plane)
-{
-  return scene_keep(scene, plane, sizeof *plane);
 }
 
 bool scene_add_instance(Scene *scene, const Instance *inst)
@@ -163,10 +137,7 @@ bool scene_prepare(Scene *scene, unsigned features)
 {
   memset(&scene->info, 0, sizeof scene->info);
   scene->n_instances = scene->n_shapes; /* in case of a second call */
-  if (scene->index) { /* built over the instances of a first call */
-    scene->index->destroy(scene->index);
-    scene->index = NULL;
-  }
+  scene->index = NULL;                  /* built over the instances of a first call */
   if (!(features & SCENE_AMBIENT) && !vec_is_zero(scene->ambient)) {
     scene->info.ignored |= SCENE_AMBIENT;
     scene->ambient = glms_vec3_zero();
@@ -193,9 +164,9 @@ float scene_instance_hit_t(const Instance *inst, Ray r, float tmax)
 {
   switch (inst->shape) {
   case SHAPE_SPHERE: return sphere_hit_t(&inst->sphere, r, tmax);
-  case SHAPE_PLANE: return plane_hit_t(inst->plane, r, tmax);
+  case SHAPE_PLANE: return plane_hit_t(&inst->plane, r, tmax);
   case SHAPE_QUAD: return quad_hit_t(inst->quad, r, tmax);
-  case SHAPE_DISC: return disc_hit_t(inst->disc, r, tmax);
+  case SHAPE_DISC: return disc_hit_t(&inst->disc, r, tmax);
   }
   return INFINITY;
 }
@@ -204,9 +175,9 @@ static void instance_hit_fill(const Instance *inst, Ray r, float t, Hit *hit)
 {
   switch (inst->shape) {
   case SHAPE_SPHERE: sphere_hit_fill(&inst->sphere, r, t, hit); break;
-  case SHAPE_PLANE: plane_hit_fill(inst->plane, r, t, hit); break;
+  case SHAPE_PLANE: plane_hit_fill(&inst->plane, r, t, hit); break;
   case SHAPE_QUAD: quad_hit_fill(inst->quad, r, t, hit); break;
-  case SHAPE_DISC: disc_hit_fill(inst->disc, r, t, hit); break;
+  case SHAPE_DISC: disc_hit_fill(&inst->disc, r, t, hit); break;
   }
   hit->inst = inst;
 }
@@ -244,19 +215,10 @@ bool scene_intersect(const Scene *scene, Ray r, float tmax, Hit *hit)
 
 bool scene_occluded(const Scene *scene, Ray r, float tmax)
 {
-  if (scene->no_occluders)
-    return false;
   if (scene->index)
     return scene->index->any(scene, &r, tmax);
   for (int k = 0; k < scene->n_shapes; k++)
     if (scene_instance_hit_t(&scene->instances[k], r, tmax) < tmax)
       return true;
   return false;
-}
-
-Scene scene_view_unoccluded(const Scene *scene)
-{
-  Scene view = *scene;
-  view.no_occluders = true;
-  return view;
 }

@@ -16,9 +16,9 @@ static inline bool same_instance(const Instance *a, const Instance *b)
     return false;
   switch (a->shape) {
   case SHAPE_SPHERE: return memcmp(&a->sphere, &b->sphere, sizeof a->sphere) == 0;
-  case SHAPE_PLANE:  return memcmp(a->plane, b->plane, sizeof *a->plane) == 0;
+  case SHAPE_PLANE:  return memcmp(&a->plane, &b->plane, sizeof a->plane) == 0;
   case SHAPE_QUAD:   return memcmp(a->quad, b->quad, sizeof *a->quad) == 0;
-  case SHAPE_DISC:   return memcmp(a->disc, b->disc, sizeof *a->disc) == 0;
+  case SHAPE_DISC:   return memcmp(&a->disc, &b->disc, sizeof a->disc) == 0;
   }
   return false;
 }

@@ -23,8 +23,8 @@ static void spheres_on_floor(Scene *s, Rng *g, int n, float half)
   Material m = {.name = "m", .diffuse = vec_make(0.5f, 0.5f, 0.5f)};
   cr_assert(scene_add_material(s, &m), "out of memory");
   Plane floor = plane_make(vec_make(0, 0, 0), vec_make(0, 1, 0));
-  Instance pl = {.shape = SHAPE_PLANE, .plane = scene_add_plane(s, &floor), .light = -1};
-  cr_assert(pl.plane && scene_add_instance(s, &pl), "out of memory");
+  Instance pl = {.shape = SHAPE_PLANE, .plane = floor, .light = -1};
+  cr_assert(scene_add_instance(s, &pl), "out of memory");
   for (int k = 0; k < n; k++) {
     Instance in = {.shape = SHAPE_SPHERE, .light = -1};
     in.sphere.center = vec_make(uni(g, -half, half), uni(g, 0, 5), uni(g, -half, half));
@@ -132,7 +132,7 @@ static int wrong_instance(const Scene *s, Ray r, float tmax, float best, float *
     const Instance *in = &s->instances[m];
     if (in->shape != SHAPE_SPHERE && in->shape != SHAPE_PLANE)
       continue;
-    Exact e = in->shape == SHAPE_SPHERE ? exact_sphere(&in->sphere, r) : exact_plane(in->plane, r);
+    Exact e = in->shape == SHAPE_SPHERE ? exact_sphere(&in->sphere, r) : exact_plane(&in->plane, r);
     float t = scene_instance_hit_t(in, r, INFINITY);
     bool wrong = isnan(t) || (e.decidable && (t < INFINITY) != (e.t < INFINITY)) ||
                  (e.decidable && t < INFINITY && fabsl(t - e.t) > 1e-4L * e.t);
@@ -191,8 +191,8 @@ static void blame(Blame *b, const Scene *s, Ray r, float tmax, float best, bool 
              m, in->sphere.radius, in->sphere.center.x, in->sphere.center.y, in->sphere.center.z);
   else
     snprintf(shape, sizeof shape, "instance #%d, the plane through (%.9g, %.9g, %.9g) with "
-             "normal (%.9g, %.9g, %.9g)", m, in->plane->point.x, in->plane->point.y,
-             in->plane->point.z, in->plane->normal.x, in->plane->normal.y, in->plane->normal.z);
+             "normal (%.9g, %.9g, %.9g)", m, in->plane.point.x, in->plane.point.y,
+             in->plane.point.z, in->plane.normal.x, in->plane.normal.y, in->plane.normal.z);
   CHECK_THAT(in->shape == SHAPE_SPHERE ? &b->sphere : &b->plane, false, "%s\n  the ray o = "
              "(%.9g, %.9g, %.9g), d = (%.9g, %.9g, %.9g) gets a wrong answer from %s, so the "
              "scene index (given code), which tests only the shapes a ray can meet, and the "
@@ -247,6 +247,7 @@ static void check_layout(const char *layout, int n, int rays)
   Scene s;
   random_scene(&s, &g, n);
   check_answers(&s, &g, layout, rays);
+  accel_free(&s);
   scene_free(&s);
   unsetenv("RT_ACCEL");
 }
@@ -297,8 +298,8 @@ Test(accel, large_scenes_give_the_plain_loops_answers)
       cr_assert(scene_add_material(&s, &m), "out of memory");
       for (int k = 0; k < 70000; k++) {
         Plane below = plane_make(vec_make(0, -100.0f - (float)k, 0), vec_make(0, 1, 0));
-        Instance pl = {.shape = SHAPE_PLANE, .light = -1, .plane = scene_add_plane(&s, &below)};
-        cr_assert(pl.plane && scene_add_instance(&s, &pl), "out of memory");
+        Instance pl = {.shape = SHAPE_PLANE, .light = -1, .plane = below};
+        cr_assert(scene_add_instance(&s, &pl), "out of memory");
       }
       for (int k = 0; k < 10; k++) {
         Instance in = {.shape = SHAPE_SPHERE, .light = -1,
@@ -317,6 +318,7 @@ Test(accel, large_scenes_give_the_plain_loops_answers)
     static const char *what[] = {"spheres before the floor", "floor among the spheres",
                                  "10 spheres after 70000 planes"};
     check_answers(&s, &g, what[variant], 2000);
+    accel_free(&s);
     scene_free(&s);
   }
 }
@@ -496,8 +498,8 @@ static void cone_scene(Scene *s, Rng *g, int n, int variant)
   spheres_on_floor(s, g, n, 6);
   if (variant % 2) {
     Plane tilted = plane_make(vec_make(0, -0.5f, 0), vec_make(0.1f, 1, 0.05f));
-    Instance pl = {.shape = SHAPE_PLANE, .light = -1, .plane = scene_add_plane(s, &tilted)};
-    cr_assert(pl.plane && scene_add_instance(s, &pl), "out of memory");
+    Instance pl = {.shape = SHAPE_PLANE, .light = -1, .plane = tilted};
+    cr_assert(scene_add_instance(s, &pl), "out of memory");
   }
   const Sphere *inside = &s->instances[1 + (int)(rng_float(g) * (float)n)].sphere;
   s->camera.eye = variant == 2 ? inside->center : vec_make(uni(g, -12, 12), uni(g, 0.5f, 8), 12);
@@ -635,6 +637,7 @@ Test(accel, cones_give_the_plain_loops_answers)
           check_ray(&c, &s, along, k % 3 ? INFINITY : uni(&g, 0.1f, 20), false,
                     "ray along the directional light", n, variant, k);
         }
+        accel_free(&s);
         scene_free(&s);
       }
     }

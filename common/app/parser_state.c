@@ -260,9 +260,7 @@ static bool st_plane(Parser *p)
   if (!fields_read(&p->lx, "plane", keys, 3, f) || !limits_direction(&p->lx, &f[1], "normal"))
     return false;
   Plane plane = plane_make(f[0].v, f[1].v);
-  Instance inst = {.shape = SHAPE_PLANE, .plane = scene_add_plane(p->scene, &plane)};
-  if (!inst.plane)
-    return false;
+  Instance inst = {.shape = SHAPE_PLANE, .plane = plane};
   return add_shape(p, &inst, &p->lx.tok[f[2].val]);
 }
 
@@ -275,9 +273,7 @@ static bool st_disc(Parser *p)
       !limits_length(&p->lx, &f[2], "radius"))
     return false;
   Disc disc = disc_make(f[0].v, f[1].v, f[2].v.x);
-  Instance inst = {.shape = SHAPE_DISC, .disc = scene_keep(p->scene, &disc, sizeof disc)};
-  if (!inst.disc)
-    return false;
+  Instance inst = {.shape = SHAPE_DISC, .disc = disc};
   return add_shape(p, &inst, &p->lx.tok[f[3].val]);
 }
 
@@ -378,10 +374,47 @@ void parser_begin(Parser *p, const char *file, const char *text, size_t len, Sce
   lexer_init(&p->lx, file, text, len);
 }
 
+/* The sphere lines that follow, as the speed pack reads them straight from
+ * the text (pack_sphere_line): each value checked as st_sphere's fields
+ * check it; the first line the pack declines, or any value in doubt, is
+ * left to the general path (lexer_line, statement), which reads it and says
+ * what is wrong. A run of lines names few materials: the last name's is
+ * remembered. False when out of memory. */
+static bool sphere_lines(Parser *p)
+{
+  Lexer *lx = &p->lx;
+  PackSphereLine sl;
+  const char *last = NULL;
+  int last_len = 0, material = -1;
+  while (pack_sphere_line(lx->next, lx->end, &sl)) {
+    if (sl.longest >= LEXER_TOKEN_MAX || !fields_coordinate_ok(sl.v[0]) ||
+        !fields_coordinate_ok(sl.v[1]) || !fields_coordinate_ok(sl.v[2]) ||
+        !limits_length_ok(sl.v[3]))
+      return true;
+    if (!last || sl.name_len != last_len || memcmp(sl.name, last, (size_t)last_len) != 0) {
+      if (!lexer_name_valid(sl.name, sl.name_len, MATERIAL_NAME_MAX - 1))
+        return true;
+      material = names_find(&p->names, parser_materials(p->scene), sl.name, sl.name_len);
+      last = sl.name;
+      last_len = sl.name_len;
+    }
+    Token tok = {sl.name, sl.name_len, (int)(sl.name - lx->next) + 1};
+    lx->line++;
+    lx->n = lx->pos = 0;
+    lx->next = sl.next;
+    Instance inst = {.shape = SHAPE_SPHERE,
+                     .sphere = {.center = {{sl.v[0], sl.v[1], sl.v[2]}}, .radius = sl.v[3]},
+                     .material = material};
+    if (!parser_place_shape(p, &inst, &tok))
+      return false;
+  }
+  return true;
+}
+
 bool parser_statements(Parser *p)
 {
   for (;;) {
-    if (!pack_lines(p)) /* the speed pack may read the lines that follow itself */
+    if (!sphere_lines(p))
       return false;
     int more = lexer_line(&p->lx);
     if (more == 0)

@@ -25,8 +25,22 @@ enum {
   LEAF_MAX = 4 /* spheres per leaf of the hierarchy */
 };
 
+/* An area light as the any-hit query recognises the shadow rays toward it:
+ * its plane and the dual basis of its edges (w . u1, w . u2 are the
+ * parallelogram coordinates of corner + w), and how far a ray's end may
+ * stray from it. */
+typedef struct Area {
+  const Quad *quad;
+  vec3s corner, normal, u1, u2;
+  float stray;      /* 2^-19 of the quad's size: the rounding of its points */
+  float edges;      /* |edge1| + |edge2| */
+} Area;
+
+enum { VIEW_MAX = 8, AREAS_MAX = 8 };
+
 typedef struct Accel {
   SceneIndex base;  /* first member: scene->index points here */
+  unsigned id;      /* this build's number, for the shadow memo */
   BvhNode *nodes;   /* nodes[0] is the root; a leaf holds spheres[index ..
                      * index + meta), in increasing instance order */
   int *spheres;     /* instance indices of the lit spheres, in leaf order */
@@ -34,6 +48,9 @@ typedef struct Accel {
   int n_others, n_others_lit;
   Cones *cones;     /* small scenes: the spheres' cones seen from the eye and
                      * the lights (index/cones.c), or NULL */
+  Area areas[AREAS_MAX]; /* the first area lights, when the scene takes
+                          * more than SHADOW_VIEW_MIN_SAMPLES samples of each */
+  int n_areas;
 } Accel;
 
 /* The closest hit so far: distance and instance index (INT_MAX: none). */
@@ -170,10 +187,10 @@ static bool bvh_any(const Scene *scene, const Accel *acc, const Ray *r, float tm
  * into the sky, are such rays. */
 static bool leaves_plane(const Instance *inst, const Ray *r)
 {
-  if (inst->shape != SHAPE_PLANE || inst->plane->axis < 0)
+  if (inst->shape != SHAPE_PLANE || inst->plane.axis < 0)
     return false;
-  int a = inst->plane->axis;
-  float h = r->o.raw[a] - inst->plane->point.raw[a], d = r->d.raw[a];
+  int a = inst->plane.axis;
+  float h = r->o.raw[a] - inst->plane.point.raw[a], d = r->d.raw[a];
   return d != 0.0f && (h == 0.0f || (h > 0.0f && d > 0.0f) || (h < 0.0f && d < 0.0f));
 }
 
@@ -201,9 +218,67 @@ static const Instance *accel_closest(const Scene *scene, const Ray *r, float *tm
   return &scene->instances[best.inst];
 }
 
+/* The lit shapes that may stop a shadow ray from one origin toward one
+ * area light (area_shapes): their count n (-1: more than VIEW_MAX, ask the
+ * whole index) and instance indices. One per thread, for the last origin
+ * and light asked: the light samples of a shading point share their origin,
+ * so the hull is built once per point and light. It is a memo: any ray its
+ * key admits gets the same answer from ids as from the whole scene. */
+typedef struct ShadowMemo {
+  unsigned accel;  /* Accel.id of the index it was made for (0: none) */
+  int area;        /* index into Accel.areas */
+  vec3s o;         /* the rays' origin, compared bit for bit */
+  int n;
+  int ids[VIEW_MAX];
+} ShadowMemo;
+
+static _Thread_local ShadowMemo memo;
+
+static int area_shapes(const Scene *scene, const Accel *acc, vec3s o, const Quad *q, int *ids,
+                       int max);
+
+/* Whether the ray's end o + tmax d lies on area light a, within what the
+ * sample points' rounding and ray_shadow_tmax leave (a ray that does lies
+ * in the hull of o and the light, hull_make's margin included). */
+static bool toward_area(const Area *a, const Ray *r, float tmax)
+{
+  vec3s w = glms_vec3_sub(glms_vec3_add(r->o, glms_vec3_scale(r->d, tmax)), a->corner);
+  float stray = a->stray + 0x1p-18f * tmax * vec_sum_abs(r->d);
+  float across = stray / a->edges, u = glms_vec3_dot(w, a->u1), v = glms_vec3_dot(w, a->u2);
+  return fabsf(glms_vec3_dot(w, a->normal)) <= stray && u >= -across && u <= 1.0f + across &&
+         v >= -across && v <= 1.0f + across;
+}
+
+/* The memo for a shadow ray toward an area light, filled for its origin
+ * when it is not already; NULL when the ray ends on no area light. */
+static const ShadowMemo *shadow_memo(const Scene *scene, const Accel *acc, const Ray *r,
+                                     float tmax)
+{
+  ShadowMemo *m = &memo;
+  bool same = m->accel == acc->id && memcmp(&m->o, &r->o, sizeof m->o) == 0;
+  if (same && toward_area(&acc->areas[m->area], r, tmax))
+    return m;
+  for (int k = 0; k < acc->n_areas; k++)
+    if (toward_area(&acc->areas[k], r, tmax)) {
+      *m = (ShadowMemo){.accel = acc->id, .area = k, .o = r->o};
+      m->n = area_shapes(scene, acc, r->o, acc->areas[k].quad, m->ids, VIEW_MAX);
+      return m;
+    }
+  return NULL;
+}
+
 static bool accel_any(const Scene *scene, const Ray *r, float tmax)
 {
   const Accel *acc = (const Accel *)scene->index;
+  const ShadowMemo *m = acc->n_areas > 0 ? shadow_memo(scene, acc, r, tmax) : NULL;
+  if (m && m->n >= 0) {
+    for (int k = 0; k < m->n; k++) {
+      const Instance *inst = &scene->instances[m->ids[k]];
+      if (!leaves_plane(inst, r) && scene_instance_hit_t(inst, *r, tmax) < tmax)
+        return true;
+    }
+    return false;
+  }
   for (int k = 0; k < acc->n_others_lit; k++) {
     const Instance *inst = &scene->instances[acc->others[k]];
     if (!leaves_plane(inst, r) && scene_instance_hit_t(inst, *r, tmax) < tmax)
@@ -219,9 +294,8 @@ static bool accel_any(const Scene *scene, const Ray *r, float tmax)
   return acc->nodes && bvh_any(scene, acc, r, tmax);
 }
 
-static void accel_destroy(SceneIndex *index)
+static void accel_destroy(Accel *acc)
 {
-  Accel *acc = (Accel *)index;
   free(acc->nodes);
   free(acc->spheres);
   free(acc->others);
@@ -342,12 +416,43 @@ static int sort_instances(const Scene *scene, Accel *acc, int *ids, Ball *balls,
   return sum;
 }
 
+/* More light samples than this: the shadow rays toward area lights test
+ * only the shapes that may stop them. Fewer: the hull costs more than it
+ * saves. */
+enum { SHADOW_VIEW_MIN_SAMPLES = 4 };
+
+/* The area lights' recognition data (Area). */
+static void add_areas(const Scene *scene, Accel *acc)
+{
+  if (scene->light_samples <= SHADOW_VIEW_MIN_SAMPLES)
+    return;
+  for (int k = 0; k < scene->n_lights && acc->n_areas < AREAS_MAX; k++) {
+    const Quad *q = &scene->lights[k].quad;
+    if (scene->lights[k].type != LIGHT_AREA || !(q->area > 0.0f))
+      continue;
+    vec3s n = q->normal, c1 = glms_vec3_cross(q->edge2, n), c2 = glms_vec3_cross(n, q->edge1);
+    float d1 = glms_vec3_dot(q->edge1, c1), d2 = glms_vec3_dot(q->edge2, c2);
+    if (!(fabsf(d1) > 0.0f && fabsf(d2) > 0.0f))
+      continue;
+    acc->areas[acc->n_areas++] = (Area){
+        .quad = q, .corner = q->corner, .normal = n,
+        .u1 = glms_vec3_scale(c1, 1.0f / d1), .u2 = glms_vec3_scale(c2, 1.0f / d2),
+        .stray = 0x1p-19f * (vec_max_abs(q->corner) + vec_max_abs(q->edge1) +
+                             vec_max_abs(q->edge2)),
+        .edges = glms_vec3_norm(q->edge1) + glms_vec3_norm(q->edge2)};
+  }
+}
+
+void accel_free(Scene *scene)
+{
+  if (scene->index && scene->index->any == accel_any)
+    accel_destroy((Accel *)scene->index);
+  scene->index = NULL;
+}
+
 bool accel_build(Scene *scene)
 {
-  if (scene->index) {
-    scene->index->destroy(scene->index);
-    scene->index = NULL;
-  }
+  accel_free(scene);
   int layout = layout_wanted();
   if (layout == 0)
     return true;
@@ -373,10 +478,13 @@ bool accel_build(Scene *scene)
   if (!ok) {
     fprintf(stderr, "accel: out of memory for %d instances\n", scene->n_instances);
     if (acc)
-      accel_destroy(&acc->base);
+      accel_destroy(acc);
     return false;
   }
-  acc->base = (SceneIndex){.closest = accel_closest, .any = accel_any, .destroy = accel_destroy};
+  static unsigned builds; /* Accel.id: never 0, never that of an index still alive */
+  acc->id = __atomic_add_fetch(&builds, 1, __ATOMIC_RELAXED);
+  add_areas(scene, acc);
+  acc->base = (SceneIndex){.closest = accel_closest, .any = accel_any};
   scene->index = &acc->base;
   return true;
 }
@@ -428,33 +536,24 @@ static bool instance_may_occlude(const Instance *inst, const ShadowHull *h)
 {
   switch (inst->shape) {
   case SHAPE_SPHERE: return hull_may_meet_sphere(h, inst->sphere.center, inst->sphere.radius);
-  case SHAPE_PLANE: return hull_may_meet_plane(h, inst->plane);
+  case SHAPE_PLANE: return hull_may_meet_plane(h, &inst->plane);
   default: return true; /* a quad, a disc: may (conservative) */
   }
 }
 
-/* Not inlined: it runs once per shading point, and inlined (LTO) into a
- * step's sample loop it slowed that loop even where never called. */
-__attribute__((noinline)) int accel_quad_occluders(const Scene *scene, const Hit *hit,
-                                                   const Quad *q, int *ids, int max)
+/* The lit shapes that may stop a ray from o to the quad (hull.c's tests,
+ * through the hierarchy's boxes): their count and instance indices in ids,
+ * or -1 when more than max may. Every other lit shape lets every such ray
+ * pass: scene_occluded over ids alone answers as over the whole scene.
+ * Not inlined: it runs once per shading point and light. */
+__attribute__((noinline)) static int area_shapes(const Scene *scene, const Accel *acc, vec3s o,
+                                                 const Quad *q, int *ids, int max)
 {
-  ShadowHull h = hull_make(hit, q);
-  Occluders o = {.ids = ids, .max = max};
-  if (!scene->index || scene->index->destroy != accel_destroy) {
-    for (int k = 0; k < scene->n_shapes; k++)
-      if (instance_may_occlude(&scene->instances[k], &h) && !occluder(&o, k))
-        return -1;
-    return o.n;
-  }
-  const Accel *acc = (const Accel *)scene->index;
+  ShadowHull h = hull_make(o, q);
+  Occluders oc = {.ids = ids, .max = max};
   for (int k = 0; k < acc->n_others_lit; k++)
     if (instance_may_occlude(&scene->instances[acc->others[k]], &h) &&
-        !occluder(&o, acc->others[k]))
+        !occluder(&oc, acc->others[k]))
       return -1;
-  return acc->nodes && !bvh_occluders(scene, acc, &h, &o) ? -1 : o.n;
-}
-
-bool accel_quad_unoccluded(const Scene *scene, const Hit *hit, const Quad *q)
-{
-  return accel_quad_occluders(scene, hit, q, NULL, 0) == 0;
+  return acc->nodes && !bvh_occluders(scene, acc, &h, &oc) ? -1 : oc.n;
 }
