@@ -643,3 +643,78 @@ Test(accel, cones_give_the_plain_loops_answers)
     }
   blame_done(&c);
 }
+
+/* Spheres and (in odd variants) tilted discs over the floor under an area
+ * light, 16 light samples: the any-hit query recognises the shadow rays
+ * toward the light by their end and tests only the shapes that may stand
+ * between their origin and the light (fast/index/accel.c, hull.c). */
+static void area_scene(Scene *s, Rng *g, int n, int variant)
+{
+  spheres_on_floor(s, g, n, 4);
+  for (int k = 0; variant % 2 && k < 3; k++) {
+    Instance d = {.shape = SHAPE_DISC, .light = -1,
+                  .disc = disc_make(vec_make(uni(g, -3, 3), uni(g, 0.5f, 2.5f), uni(g, -3, 3)),
+                                    random_unit(g), uni(g, 0.2f, 1.0f))};
+    cr_assert(scene_add_instance(s, &d), "out of memory");
+  }
+  Light area = {.type = LIGHT_AREA, .power = vec_make(10, 10, 10),
+                .quad = quad_make(vec_make(uni(g, -2, 0), uni(g, 4, 6), uni(g, -2, 0)),
+                                  vec_make(uni(g, 0.5f, 3), 0, uni(g, -0.5f, 0.5f)),
+                                  vec_make(uni(g, -0.5f, 0.5f), uni(g, -1, 0), uni(g, 0.5f, 3)))};
+  cr_assert(scene_add_light(s, &area), "out of memory");
+  s->light_samples = 16;
+  cr_assert(scene_prepare(s, SCENE_CAMERA | SCENE_LIGHTS | SCENE_AREA_LIGHTS), "out of memory");
+  cr_assert(accel_build(s), "accel_build (given code) failed");
+}
+
+/* The shadow rays of shading points toward an area light (the step's own:
+ * ray_spawn toward a random point of the light, ray_shadow_tmax of its
+ * distance), from points on the floor, the spheres and the discs: the plain
+ * loop's answers, whether the index tests the shapes the hull leaves (none,
+ * a few) or the whole scene; each of the first two must occur often. */
+Test(accel, area_light_shadow_rays_give_the_plain_loops_answers)
+{
+  stress_step(8);
+  Blame c = blame_make("scene index (given code: fast/index/accel.c, hull.c)",
+                       "docs/performance.md, \"Shadow rays toward an area light\"");
+  static const char *const layouts[] = {"flat", "bvh", ""};
+  int kinds[3] = {0, 0, 0}; /* points whose rays test no shape, a few, the whole index */
+  for (int variant = 0; variant < 6; variant++) {
+    setenv("RT_ACCEL", layouts[variant % 3], 1);
+    for (int rep = 0; rep < 8; rep++) {
+      int n = 1 + rep * 5 + variant;
+      Rng g = rng_make(17, (uint32_t)(variant * 100 + rep), 0);
+      Scene s;
+      area_scene(&s, &g, n, variant);
+      const Quad *q = &s.lights[0].quad;
+      for (int p = 0; p < 300; p++) {
+        Ray cam = {.o = vec_make(uni(&g, -5, 5), 7, uni(&g, -5, 5)),
+                   .d = glms_vec3_normalize(vec_make(uni(&g, -0.6f, 0.6f), -1, uni(&g, -0.6f, 0.6f)))};
+        Hit hit;
+        if (!scene_intersect(&s, cam, INFINITY, &hit) || hit.inst->light >= 0)
+          continue;
+        int ids[8];
+        int shapes = accel_area_shapes(&s, ray_spawn(&hit, hit.n).o, q, ids, 8);
+        kinds[shapes == 0 ? 0 : shapes > 0 ? 1 : 2]++;
+        for (int k = 0; k < 32; k++) {
+          vec3s x = quad_point(q, rng_float(&g), rng_float(&g)), to_x = glms_vec3_sub(x, hit.p);
+          float dist = glms_vec3_norm(to_x);
+          vec3s l = glms_vec3_scale(to_x, 1.0f / dist);
+          if (!(glms_vec3_dot(hit.n, l) > 0.0f))
+            continue;
+          check_ray(&c, &s, ray_spawn(&hit, l), ray_shadow_tmax(dist), false,
+                    "shadow ray toward the area light", n, variant, k);
+        }
+      }
+      accel_free(&s);
+      scene_free(&s);
+    }
+  }
+  unsetenv("RT_ACCEL");
+  blame_done(&c);
+  Check k = CHECK("accel_area_shapes (given code: fast/index/accel.c)",
+                  "docs/performance.md, \"Shadow rays toward an area light\"");
+  CHECK_THAT(&k, kinds[0] > 500 && kinds[1] > 500, "shading points whose shadow rays test no "
+             "shape %d, a few %d, the whole index %d: expected more than 500 of the first two "
+             "(the test must matter)", kinds[0], kinds[1], kinds[2]);
+}

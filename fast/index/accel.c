@@ -93,12 +93,15 @@ static void consider(const Scene *scene, int id, const Ray *r, Best *best)
   keep(best, id, scene_instance_hit_t(&scene->instances[id], *r, limit_of(best)));
 }
 
-/* The same for a lit sphere of the hierarchy (its leaves hold nothing else):
+/* The same for a shape of the hierarchy: a sphere (most of them) with
  * sphere_hit_t, which scene_instance_hit_t would call, without the shape's
- * switch, so that the compiler puts the test inside the traversal loop. */
-static float leaf_sphere_t(const Scene *scene, int id, const Ray *r, float tmax)
+ * switch, so that the compiler puts the test inside the traversal loop; any
+ * other shape through scene_instance_hit_t. */
+static float leaf_t(const Scene *scene, int id, const Ray *r, float tmax)
 {
-  return sphere_hit_t(&scene->instances[id].sphere, *r, tmax);
+  const Instance *inst = &scene->instances[id];
+  return inst->shape == SHAPE_SPHERE ? sphere_hit_t(&inst->sphere, *r, tmax)
+                                     : scene_instance_hit_t(inst, *r, tmax);
 }
 
 /* Ray's distance into a node's box; NaN (every comparison false) when it
@@ -142,7 +145,7 @@ static void bvh_closest(const Scene *scene, const Accel *acc, const Ray *r, Best
     if (box_enter(nd, o, inv_d, best->t) <= best->t) {
       if (nd->meta > 0) {
         for (int k = nd->index; k < nd->index + nd->meta; k++)
-          keep(best, acc->spheres[k], leaf_sphere_t(scene, acc->spheres[k], r, limit_of(best)));
+          keep(best, acc->spheres[k], leaf_t(scene, acc->spheres[k], r, limit_of(best)));
       } else {
         bool neg = r->d.raw[-1 - nd->meta] < 0.0f;
         stack[top++] = nd->index + !neg;
@@ -165,7 +168,7 @@ static bool bvh_any(const Scene *scene, const Accel *acc, const Ray *r, float tm
     if (box_enter(nd, o, inv_d, tmax) < tmax) {
       if (nd->meta > 0) {
         for (int k = nd->index; k < nd->index + nd->meta; k++)
-          if (leaf_sphere_t(scene, acc->spheres[k], r, tmax) < tmax)
+          if (leaf_t(scene, acc->spheres[k], r, tmax) < tmax)
             return true;
       } else {
         stack[top++] = nd->index + 1;
@@ -238,12 +241,14 @@ static int area_shapes(const Scene *scene, const Accel *acc, vec3s o, const Quad
                        int max);
 
 /* Whether the ray's end o + tmax d lies on area light a, within what the
- * sample points' rounding and ray_shadow_tmax leave (a ray that does lies
- * in the hull of o and the light, hull_make's margin included). */
+ * sample points' rounding, the push of the origin off the surface and
+ * ray_shadow_tmax (2^-20 of the length) leave: 2^-19 of the quad's size and
+ * of the ray's length. Such a ray lies in the hull of o and the light
+ * grown by that much, which hull.c's margins cover. */
 static bool toward_area(const Area *a, const Ray *r, float tmax)
 {
   vec3s w = glms_vec3_sub(glms_vec3_add(r->o, glms_vec3_scale(r->d, tmax)), a->corner);
-  float stray = a->stray + 0x1p-18f * tmax * vec_sum_abs(r->d);
+  float stray = a->stray + 0x1p-19f * tmax * vec_sum_abs(r->d);
   float across = stray / a->edges, u = glms_vec3_dot(w, a->u1), v = glms_vec3_dot(w, a->u2);
   return fabsf(glms_vec3_dot(w, a->normal)) <= stray && u >= -across && u <= 1.0f + across &&
          v >= -across && v <= 1.0f + across;
@@ -316,10 +321,25 @@ static int layout_wanted(void)
        : strcmp(env, "bvh") == 0  ? 2 : -1;
 }
 
-/* A sphere as the build reads it (index/box.h). */
-static Ball sphere_ball(const Sphere *s)
+/* The sphere an instance of the hierarchy stands in: a sphere itself; any
+ * other shape the ball around its box (scene_instance_bounds), which holds
+ * its box's margin, the rounding of the ball's own centre and radius far
+ * below it. */
+static Sphere item_sphere(const Instance *inst)
 {
-  return (Ball){s->center.x, s->center.y, s->center.z, s->radius};
+  if (inst->shape == SHAPE_SPHERE)
+    return inst->sphere;
+  Box b = scene_instance_bounds(inst);
+  vec3s half = glms_vec3_scale(glms_vec3_sub(b.max, b.min), 0.5f);
+  return (Sphere){.center = glms_vec3_add(b.min, half),
+                  .radius = glms_vec3_norm(half) * (1.0f + 0x1p-20f)};
+}
+
+/* An instance's ball as the build reads it (index/box.h). */
+static Ball item_ball(const Instance *inst)
+{
+  Sphere s = item_sphere(inst);
+  return (Ball){s.center.x, s.center.y, s.center.z, s.radius};
 }
 
 /* The hierarchy over the n lit spheres: instances base .. base + n - 1,
@@ -344,18 +364,26 @@ static bool build_tree(const Scene *scene, Accel *acc, const int *ids, int base,
 
 enum { BLOCKS_MAX = 256 }; /* blocks of instances sorted at once */
 
-static bool lit_sphere(const Scene *scene, int k)
+/* Whether instance k goes into the hierarchy: a lit shape with a bounded
+ * box (every shape but the plane). The others (planes, the lights' shapes)
+ * stay in the list. */
+static bool tree_item(const Scene *scene, int k)
 {
-  return k < scene->n_shapes && scene->instances[k].shape == SHAPE_SPHERE;
+  if (k >= scene->n_shapes)
+    return false;
+  const Instance *inst = &scene->instances[k];
+  return inst->shape == SHAPE_SPHERE ||
+         (inst->shape != SHAPE_PLANE && box_is_bounded(scene_instance_bounds(inst)));
 }
 
-/* The lit spheres into ids[] (instance order) with their balls, everything
- * else into acc->others (instance order, so the lit ones first); returns the
- * spheres' count. Large scenes in blocks, one per thread: each block counted,
+/* The hierarchy's shapes (tree_item) into ids[] (instance order) with their
+ * balls, everything else into acc->others (instance order, so the lit ones
+ * first); returns the hierarchy's count. Large scenes in blocks, one per thread: each block counted,
  * then filled at its place, so the lists are the same for any thread count
  * (the balls written with the ids, so that each instance is read twice, not
- * three times). *base: when a large scene's lit spheres are the instances
- * base, base + 1, ... (a file of spheres, its planes before or after them),
+ * three times). *base: when a large scene's hierarchy is of spheres only,
+ * the instances base, base + 1, ... (a file of spheres, its planes before or
+ * after them),
  * ids[] and balls[] are left unwritten, sphere k being instance base + k,
  * which the build reads in place; else -1. The fill is then only that of the
  * few others: one pass over the instances instead of two, and no copy of
@@ -365,31 +393,37 @@ static int sort_instances(const Scene *scene, Accel *acc, int *ids, Ball *balls,
   int n = scene->n_instances, threads = omp_get_max_threads();
   int blocks = n > 65536 ? (threads < BLOCKS_MAX ? threads : BLOCKS_MAX) : 1;
   int first[BLOCKS_MAX + 1], spheres[BLOCKS_MAX + 1], lo[BLOCKS_MAX], hi[BLOCKS_MAX];
+  bool shapes[BLOCKS_MAX]; /* a shape other than a sphere among the block's */
   for (int b = 0; b <= blocks; b++)
     first[b] = (int)((long long)n * b / blocks);
 #pragma omp parallel for schedule(static, 1) if (blocks > 1)
   for (int b = 0; b < blocks; b++) {
     int count = 0, low = INT_MAX, high = -1; /* in registers: the arrays share a cache line */
+    bool other = false;
     for (int k = first[b]; k < first[b + 1]; k++)
-      if (lit_sphere(scene, k)) {
+      if (tree_item(scene, k)) {
         count++;
         low = low < k ? low : k;
         high = k;
+        other = other || scene->instances[k].shape != SHAPE_SPHERE;
       }
     spheres[b] = count;
     lo[b] = low;
     hi[b] = high;
+    shapes[b] = other;
   }
   int sum = 0, lo_all = INT_MAX, hi_all = -1;
+  bool other = false;
   for (int b = 0; b < blocks; b++) { /* spheres[b]: where block b's go */
     int count = spheres[b];
     spheres[b] = sum;
     sum += count;
     lo_all = lo[b] < lo_all ? lo[b] : lo_all;
     hi_all = hi[b] > hi_all ? hi[b] : hi_all;
+    other = other || shapes[b];
   }
   spheres[blocks] = sum;
-  *base = blocks > 1 && sum > 0 && hi_all - lo_all + 1 == sum ? lo_all : -1;
+  *base = blocks > 1 && sum > 0 && !other && hi_all - lo_all + 1 == sum ? lo_all : -1;
   acc->n_others = n - sum;
   if (*base >= 0) { /* the spheres are read in place: the others are before and after them */
     int o = 0;
@@ -402,8 +436,8 @@ static int sort_instances(const Scene *scene, Accel *acc, int *ids, Ball *balls,
     for (int b = 0; b < blocks; b++) {
       int s = spheres[b], o = first[b] - spheres[b];
       for (int k = first[b]; k < first[b + 1]; k++) {
-        if (lit_sphere(scene, k)) {
-          balls[s] = sphere_ball(&scene->instances[k].sphere);
+        if (tree_item(scene, k)) {
+          balls[s] = item_ball(&scene->instances[k]);
           ids[s++] = k;
         } else {
           acc->others[o++] = k;
@@ -470,9 +504,13 @@ bool accel_build(Scene *scene)
                     layout == 1 || (layout < 0 && n <= ACCEL_FLAT_MAX));
   free(balls);
   if (ok && layout < 0 && n <= ACCEL_FLAT_MAX) {
-    for (int k = 0; base >= 0 && k < n; k++) /* a few spheres among 65 536 other shapes */
-      ids[k] = base + k;
-    acc->cones = cones_build(scene, ids, n); /* NULL: the rays go to the leaf */
+    Sphere bounds[ACCEL_FLAT_MAX];
+    for (int k = 0; k < n; k++) {
+      if (base >= 0) /* a few spheres among 65 536 other shapes */
+        ids[k] = base + k;
+      bounds[k] = item_sphere(&scene->instances[ids[k]]);
+    }
+    acc->cones = cones_build(scene, ids, bounds, n); /* NULL: the rays go to the leaf */
   }
   free(ids);
   if (!ok) {
@@ -505,8 +543,23 @@ static bool occluder(Occluders *o, int id)
   return true;
 }
 
-/* The traversal of bvh_any, with boxes and spheres tested against the hull;
- * false when more than o->max spheres may meet it. */
+/* Whether a lit shape may stop a ray of the hull: a sphere or a plane by
+ * its own test (hull.c), any other shape by its box, which then may occlude
+ * only the rays that pass through it. */
+static bool instance_may_occlude(const Instance *inst, const ShadowHull *h)
+{
+  switch (inst->shape) {
+  case SHAPE_SPHERE: return hull_may_meet_sphere(h, inst->sphere.center, inst->sphere.radius);
+  case SHAPE_PLANE: return hull_may_meet_plane(h, &inst->plane);
+  default: {
+    Box b = scene_instance_bounds(inst);
+    return !box_is_bounded(b) || hull_may_meet_box(h, b.min.raw, b.max.raw);
+  }
+  }
+}
+
+/* The traversal of bvh_any, with boxes and shapes tested against the hull;
+ * false when more than o->max shapes may meet it. */
 static bool bvh_occluders(const Scene *scene, const Accel *acc, const ShadowHull *h,
                           Occluders *o)
 {
@@ -515,11 +568,10 @@ static bool bvh_occluders(const Scene *scene, const Accel *acc, const ShadowHull
     const BvhNode *nd = &acc->nodes[node];
     if (hull_may_meet_box(h, nd->lo, nd->hi)) {
       if (nd->meta > 0) {
-        for (int k = nd->index; k < nd->index + nd->meta; k++) {
-          const Sphere *s = &scene->instances[acc->spheres[k]].sphere;
-          if (hull_may_meet_sphere(h, s->center, s->radius) && !occluder(o, acc->spheres[k]))
+        for (int k = nd->index; k < nd->index + nd->meta; k++)
+          if (instance_may_occlude(&scene->instances[acc->spheres[k]], h) &&
+              !occluder(o, acc->spheres[k]))
             return false;
-        }
       } else {
         stack[top++] = nd->index + 1;
         node = nd->index;
@@ -532,14 +584,6 @@ static bool bvh_occluders(const Scene *scene, const Accel *acc, const ShadowHull
   }
 }
 
-static bool instance_may_occlude(const Instance *inst, const ShadowHull *h)
-{
-  switch (inst->shape) {
-  case SHAPE_SPHERE: return hull_may_meet_sphere(h, inst->sphere.center, inst->sphere.radius);
-  case SHAPE_PLANE: return hull_may_meet_plane(h, &inst->plane);
-  default: return true; /* a quad, a disc: may (conservative) */
-  }
-}
 
 /* The lit shapes that may stop a ray from o to the quad (hull.c's tests,
  * through the hierarchy's boxes): their count and instance indices in ids,
@@ -556,4 +600,9 @@ __attribute__((noinline)) static int area_shapes(const Scene *scene, const Accel
         !occluder(&oc, acc->others[k]))
       return -1;
   return acc->nodes && !bvh_occluders(scene, acc, &h, &oc) ? -1 : oc.n;
+}
+
+int accel_area_shapes(const Scene *scene, vec3s o, const Quad *q, int *ids, int max)
+{
+  return area_shapes(scene, (const Accel *)scene->index, o, q, ids, max);
 }

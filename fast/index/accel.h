@@ -27,4 +27,10 @@ void accel_free(Scene *scene);
 
 enum { ACCEL_FLAT_MAX = 16 };
 
+/* The lit shapes that may stop a ray from o to a point of the quad q, as
+ * the any-hit query finds them for the shadow rays toward an area light:
+ * their count (instance indices in ids), or -1 when more than max may. For
+ * the tests; scene->index must be accel_build's. */
+int accel_area_shapes(const Scene *scene, vec3s o, const Quad *q, int *ids, int max);
+
 #endif

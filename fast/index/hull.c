@@ -74,7 +74,10 @@ ShadowHull hull_make(vec3s o, const Quad *q)
    * accel.c's toward_area); 2^-14 of them is far above that and still
    * invisible geometrically. */
   h.margin = 0x1p-14f * (scale + far);
-  h.lean = 0x1p-18 * ((double)far + q->area + vec_max_abs(q->corner) +
+  /* The ray's end may stray from the quad by what accel.c's toward_area
+   * admits (2^-19 of the quad's size and of the ray's length, at most 3 far
+   * per axis): lean covers it along f, with as much again for rounding. */
+  h.lean = 0x1p-15 * ((double)far + q->area + vec_max_abs(q->corner) +
                       vec_max_abs(q->edge1) + vec_max_abs(q->edge2) + scale);
   /* The four sides through p and an edge, outward (away from the light's
    * centre), then the light's plane and the plane through p parallel to it. */
