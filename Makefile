@@ -25,7 +25,7 @@ SCENE_08-area-lights  := scenes/area-lights.scene
 
 # Each step's unit tests: tests/test_<name>.c (make test-step N runs them).
 TESTS_01-film           := film export image
-TESTS_02-intersection   := ray sphere plane disc scene vec
+TESTS_02-intersection   := ray sphere plane disc scene vec bounds shapes
 TESTS_03-camera         := camera parser cli
 TESTS_04-phong          := light phong
 # Steps 05-08 carry step 04's Phong region in their shade.c: they run its tests too.

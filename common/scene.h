@@ -7,31 +7,30 @@
 
 #include <stdbool.h>
 #include "camera.h"
-#include "disc.h"
 #include "light.h"
 #include "material.h"
-#include "plane.h"
-#include "quad.h"
-#include "sphere.h"
+#include "shapes.h"
 
-/* The kinds of shape an instance may be. Each has a case in scene.c's
- * switches (scene_instance_hit_t, its hit_fill, scene_shape_name), which
- * -Wswitch checks; docs/extending.md lists what a new one takes. */
-typedef enum ShapeType { SHAPE_SPHERE, SHAPE_PLANE, SHAPE_QUAD, SHAPE_DISC } ShapeType;
+/* The kinds of shape an instance may be, one per line of SHAPE_REGISTRY
+ * (common/shapes.h): SHAPE_SPHERE, SHAPE_PLANE, SHAPE_QUAD, SHAPE_DISC, ...
+ * docs/extending.md lists what a new one takes. */
+#define SHAPE_ENUM_(NAME, name, Type, STORE, DOC) SHAPE_##NAME,
+typedef enum ShapeType { SHAPE_REGISTRY(SHAPE_ENUM_) SHAPE_COUNT } ShapeType;
+#undef SHAPE_ENUM_
 
-/* A shape paired with a material or a light. The instance holds its shape,
- * except an area light's, which it points to. */
+/* A shape paired with a material or a light. The instance holds its shape
+ * (INPLACE in SHAPE_REGISTRY), except an area light's quad, which it points
+ * to (KEPT: Scene.lights[light].quad). The member is named as the shape. */
+#define SHAPE_MEMBER_(NAME, name, Type, STORE, DOC) SHAPE_MEMBER_##STORE(Type, name)
 typedef struct Instance {
   ShapeType shape;
   int material;         /* index into Scene.materials, or -1 for a light's shape */
   int light;            /* index into Scene.lights, or -1 for a lit object */
   union {
-    Sphere sphere;      /* SHAPE_SPHERE */
-    Plane plane;        /* SHAPE_PLANE */
-    const Quad *quad;   /* SHAPE_QUAD: its area light's, Scene.lights[light].quad */
-    Disc disc;          /* SHAPE_DISC */
+    SHAPE_REGISTRY(SHAPE_MEMBER_)
   };
 } Instance;
+#undef SHAPE_MEMBER_
 
 /* What a step knows how to render; the rest of a scene is ignored (and said). */
 enum SceneFeature {
@@ -102,6 +101,10 @@ bool scene_add_material(Scene *scene, const Material *m);
 bool scene_add_light(Scene *scene, const Light *light);
 bool scene_add_instance(Scene *scene, const Instance *inst);
 
+/* The box of an instance's shape (sphere_bounds, plane_bounds, ...):
+ * infinite along the axes an unbounded shape extends in (box_is_bounded). */
+Box scene_instance_bounds(const Instance *inst);
+
 /* The shape's name, as the statement that makes it is written ("sphere");
  * a quad is an area light's. */
 const char *scene_shape_name(ShapeType shape);
@@ -116,7 +119,8 @@ const char *scene_shape_name(ShapeType shape);
 bool scene_prepare(Scene *scene, unsigned features);
 
 /* Distance to one instance along the ray with t in (0, tmax), INFINITY when
- * missed: the student's sphere_hit_t, plane_hit_t or quad_hit_t. */
+ * missed: its shape's name_hit_t (the student's sphere_hit_t, plane_hit_t;
+ * the given quad_hit_t, disc_hit_t, ...). */
 float scene_instance_hit_t(const Instance *inst, Ray r, float tmax);
 
 /* Closest hit with t in (0, tmax) among all instances (lit shapes and lights'

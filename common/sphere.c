@@ -73,3 +73,28 @@ void sphere_hit_fill(const Sphere *s, Ray r, float t, Hit *hit)
   hit->p_err = RAY_POINT_ERR * (vec_max_abs(s->center) + s->radius);
   /* END SOLUTION */
 }
+
+Box sphere_bounds(const Sphere *s)
+{
+  float r = s->radius, pad = box_margin(r, vec_max_abs(s->center) + r);
+  return box_around(s->center, vec_make(r, r, r), pad);
+}
+
+Sphere sphere_example(vec3s at, float size, vec3s axis)
+{
+  (void)axis;
+  return (Sphere){.center = at, .radius = size};
+}
+
+bool sphere_surface(const Sphere *s, long double u, long double v, SurfacePoint *sp)
+{
+  const long double pi = 3.141592653589793238462643383279502884L;
+  long double th = pi * v, ph = 2 * pi * u, c[3];
+  long double n[3] = {sinl(th) * cosl(ph), sinl(th) * sinl(ph), cosl(th)};
+  surface_ld(s->center, c);
+  for (int a = 0; a < 3; a++) {
+    sp->n[a] = n[a];
+    sp->p[a] = c[a] + (long double)s->radius * n[a];
+  }
+  return true;
+}
