@@ -33,7 +33,7 @@ typedef struct Area {
   const Quad *quad;
   vec3s corner, normal, u1, u2;
   float stray;      /* 2^-19 of the quad's size: the rounding of its points */
-  float edges;      /* |edge1| + |edge2| */
+  float per_edges;  /* 1 / (|edge1| + |edge2|) */
 } Area;
 
 enum { VIEW_MAX = 8, AREAS_MAX = 8 };
@@ -231,6 +231,7 @@ typedef struct ShadowMemo {
   unsigned accel;  /* Accel.id of the index it was made for (0: none) */
   int area;        /* index into Accel.areas */
   vec3s o;         /* the rays' origin, compared bit for bit */
+  vec3s from;      /* o - corner along the area's normal, u1 and u2 (area_from) */
   int n;
   int ids[VIEW_MAX];
 } ShadowMemo;
@@ -240,35 +241,50 @@ static _Thread_local ShadowMemo memo;
 static int area_shapes(const Scene *scene, const Accel *acc, vec3s o, const Quad *q, int *ids,
                        int max);
 
-/* Whether the ray's end o + tmax d lies on area light a, within what the
- * sample points' rounding, the push of the origin off the surface and
- * ray_shadow_tmax (2^-20 of the length) leave: 2^-19 of the quad's size and
- * of the ray's length. Such a ray lies in the hull of o and the light
- * grown by that much, which hull.c's margins cover. */
-static bool toward_area(const Area *a, const Ray *r, float tmax)
+/* Origin o as toward_area reads it: o - corner along a's normal, u1, u2. */
+static vec3s area_from(const Area *a, vec3s o)
 {
-  vec3s w = glms_vec3_sub(glms_vec3_add(r->o, glms_vec3_scale(r->d, tmax)), a->corner);
-  float stray = a->stray + 0x1p-19f * tmax * vec_sum_abs(r->d);
-  float across = stray / a->edges, u = glms_vec3_dot(w, a->u1), v = glms_vec3_dot(w, a->u2);
-  return fabsf(glms_vec3_dot(w, a->normal)) <= stray && u >= -across && u <= 1.0f + across &&
-         v >= -across && v <= 1.0f + across;
+  vec3s w = glms_vec3_sub(o, a->corner);
+  return vec_make(glms_vec3_dot(w, a->normal), glms_vec3_dot(w, a->u1), glms_vec3_dot(w, a->u2));
+}
+
+/* Whether the ray's end o + tmax d lies on area light a (`from`: area_from
+ * of o), within what the sample points' rounding, the push of the origin off
+ * the surface and ray_shadow_tmax (2^-20 of the length) leave: 2^-19 of the
+ * quad's size and of the ray's length. Such a ray lies in the hull of o and
+ * the light grown by that much, which hull.c's margins cover (the rounding
+ * of these few sums is far below it). */
+__attribute__((always_inline)) static inline bool toward_area(const Area *a, vec3s from,
+                                                             const Ray *r, float tmax)
+{
+  vec3s td = glms_vec3_scale(r->d, tmax);
+  float stray = a->stray + 0x1p-19f * tmax * vec_sum_abs(r->d), across = stray * a->per_edges;
+  float h = from.x + glms_vec3_dot(td, a->normal), u = from.y + glms_vec3_dot(td, a->u1),
+        v = from.z + glms_vec3_dot(td, a->u2);
+  return fabsf(h) <= stray && u >= -across && u <= 1.0f + across && v >= -across &&
+         v <= 1.0f + across;
 }
 
 /* The memo for a shadow ray toward an area light, filled for its origin
- * when it is not already; NULL when the ray ends on no area light. */
+ * when it is not already; NULL when the ray ends on no area light (a ray
+ * toward a directional light has no end). */
 static const ShadowMemo *shadow_memo(const Scene *scene, const Accel *acc, const Ray *r,
                                      float tmax)
 {
   ShadowMemo *m = &memo;
-  bool same = m->accel == acc->id && memcmp(&m->o, &r->o, sizeof m->o) == 0;
-  if (same && toward_area(&acc->areas[m->area], r, tmax))
+  if (m->accel == acc->id && memcmp(&m->o, &r->o, sizeof m->o) == 0 &&
+      toward_area(&acc->areas[m->area], m->from, r, tmax))
     return m;
-  for (int k = 0; k < acc->n_areas; k++)
-    if (toward_area(&acc->areas[k], r, tmax)) {
-      *m = (ShadowMemo){.accel = acc->id, .area = k, .o = r->o};
+  if (!(tmax < INFINITY))
+    return NULL;
+  for (int k = 0; k < acc->n_areas; k++) {
+    vec3s from = area_from(&acc->areas[k], r->o);
+    if (toward_area(&acc->areas[k], from, r, tmax)) {
+      *m = (ShadowMemo){.accel = acc->id, .area = k, .o = r->o, .from = from};
       m->n = area_shapes(scene, acc, r->o, acc->areas[k].quad, m->ids, VIEW_MAX);
       return m;
     }
+  }
   return NULL;
 }
 
@@ -473,7 +489,7 @@ static void add_areas(const Scene *scene, Accel *acc)
         .u1 = glms_vec3_scale(c1, 1.0f / d1), .u2 = glms_vec3_scale(c2, 1.0f / d2),
         .stray = 0x1p-19f * (vec_max_abs(q->corner) + vec_max_abs(q->edge1) +
                              vec_max_abs(q->edge2)),
-        .edges = glms_vec3_norm(q->edge1) + glms_vec3_norm(q->edge2)};
+        .per_edges = 1.0f / (glms_vec3_norm(q->edge1) + glms_vec3_norm(q->edge2))};
   }
 }
 
