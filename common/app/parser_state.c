@@ -374,30 +374,51 @@ void parser_begin(Parser *p, const char *file, const char *text, size_t len, Sce
   lexer_init(&p->lx, file, text, len);
 }
 
+/* A material name found in a run of sphere lines, and its material. */
+typedef struct RecentName {
+  const char *name;
+  int len, material;
+} RecentName;
+
+enum { RECENT_NAMES = 8 };
+
+/* The material a sphere line names: one of the last RECENT_NAMES names
+ * found in this run of lines (a material's index never changes while a
+ * text is parsed), else names_find after lexer_name_valid; -2 when the name
+ * is not a valid one. */
+static int line_material(Parser *p, RecentName *recent, unsigned *n_recent,
+                         const PackSphereLine *sl)
+{
+  unsigned n = *n_recent < RECENT_NAMES ? *n_recent : RECENT_NAMES;
+  for (unsigned k = 0; k < n; k++)
+    if (recent[k].len == sl->name_len && memcmp(recent[k].name, sl->name, (size_t)sl->name_len) == 0)
+      return recent[k].material;
+  if (!lexer_name_valid(sl->name, sl->name_len, MATERIAL_NAME_MAX - 1))
+    return -2;
+  int material = names_find(&p->names, parser_materials(p->scene), sl->name, sl->name_len);
+  recent[(*n_recent)++ % RECENT_NAMES] = (RecentName){sl->name, sl->name_len, material};
+  return material;
+}
+
 /* The sphere lines that follow, as the speed pack reads them straight from
  * the text (pack_sphere_line): each value checked as st_sphere's fields
  * check it; the first line the pack declines, or any value in doubt, is
  * left to the general path (lexer_line, statement), which reads it and says
- * what is wrong. A run of lines names few materials: the last name's is
- * remembered. False when out of memory. */
+ * what is wrong. False when out of memory. */
 static bool sphere_lines(Parser *p)
 {
   Lexer *lx = &p->lx;
   PackSphereLine sl;
-  const char *last = NULL;
-  int last_len = 0, material = -1;
+  RecentName recent[RECENT_NAMES];
+  unsigned n_recent = 0;
   while (pack_sphere_line(lx->next, lx->end, &sl)) {
     if (sl.longest >= LEXER_TOKEN_MAX || !fields_coordinate_ok(sl.v[0]) ||
         !fields_coordinate_ok(sl.v[1]) || !fields_coordinate_ok(sl.v[2]) ||
         !limits_length_ok(sl.v[3]))
       return true;
-    if (!last || sl.name_len != last_len || memcmp(sl.name, last, (size_t)last_len) != 0) {
-      if (!lexer_name_valid(sl.name, sl.name_len, MATERIAL_NAME_MAX - 1))
-        return true;
-      material = names_find(&p->names, parser_materials(p->scene), sl.name, sl.name_len);
-      last = sl.name;
-      last_len = sl.name_len;
-    }
+    int material = line_material(p, recent, &n_recent, &sl);
+    if (material == -2)
+      return true;
     Token tok = {sl.name, sl.name_len, (int)(sl.name - lx->next) + 1};
     lx->line++;
     lx->n = lx->pos = 0;
