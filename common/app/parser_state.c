@@ -176,46 +176,6 @@ bool parser_pending_add(Parser *p, int instance, int line, int col, const char *
   return true;
 }
 
-bool parser_pending_merge(Parser *p, const Parser *q, int first_instance)
-{
-  /* found[k]: the material q's name k names, when p has it by now (it is
-   * the one it names at the end: a material is defined once); map[k]: the
-   * name in p's forward table otherwise */
-  int *map = malloc(((size_t)q->n_forward + 1) * sizeof *map);
-  int *found = malloc(((size_t)q->n_forward + 1) * sizeof *found);
-  bool ok = map && found;
-  for (int k = 0; ok && k < q->n_forward; k++) {
-    const char *name = q->forward[k].name;
-    int len = (int)strlen(name);
-    found[k] = names_find(&p->names, materials(p), name, len);
-    ok = found[k] >= 0 || (map[k] = forward_name(p, name, len)) >= 0;
-  }
-  int left = 0;
-  for (int k = 0; ok && k < q->n_pending; k++)
-    left += found[q->pending[k].name] < 0;
-  ok = ok && pending_reserve(p, left);
-  if (ok) {
-    Pending *to = p->pending + p->n_pending;
-    Instance *inst = p->scene->instances + first_instance;
-    for (int k = 0; k < q->n_pending; k++) {
-      Pending r = q->pending[k];
-      if (found[r.name] >= 0) {
-        inst[r.instance].material = found[r.name];
-      } else {
-        r.instance += first_instance;
-        r.name = map[r.name];
-        *to++ = r;
-      }
-    }
-    p->n_pending += left;
-  }
-  if (!map || !found)
-    fprintf(stderr, "parser: out of memory\n");
-  free(map);
-  free(found);
-  return ok;
-}
-
 bool parser_place_shape(Parser *p, Instance *inst, const Token *name)
 {
   Scene *s = p->scene;
@@ -225,13 +185,7 @@ bool parser_place_shape(Parser *p, Instance *inst, const Token *name)
     if (!parser_pending_add(p, s->n_instances, p->lx.line, name->col, name->s, name->len))
       return false;
   }
-  if (p->room == 0)
-    return scene_add_instance(s, inst);
-  if (s->n_instances == p->room)
-    return false;
-  s->instances[s->n_instances++] = *inst;
-  s->n_shapes = s->n_instances;
-  return true;
+  return scene_add_instance(s, inst);
 }
 
 /* place_shape, the material looked up by its name. */

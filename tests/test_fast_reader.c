@@ -64,7 +64,7 @@ static bool parse_captured_text(const char *text, size_t len, Scene *s, char *er
   return ok;
 }
 
-Test(parse_pieces, a_mapped_file_parses_as_its_text, .timeout = 120)
+Test(fast_reader, a_mapped_file_parses_as_its_text, .timeout = 120)
 {
   Check c = CHECK("parser_load_file", "docs/scene-format.md, \"Errors\"");
   size_t cap = 10u << 20;
@@ -210,7 +210,7 @@ static bool fast_as_general(Check *c, const char *text, size_t len, const char *
  * lines, each alone between a material defined before and one defined
  * after, with and without a final newline; the same scene, or the same
  * message. */
-Test(parse_pieces, sphere_lines_read_fast_parse_as_the_general_path, .timeout = 60)
+Test(fast_reader, sphere_lines_read_fast_parse_as_the_general_path, .timeout = 60)
 {
   Check c = CHECK("parser_statements", "docs/reliability.md, \"Large scenes\"");
   uint64_t s = 0x243F6A8885A308D3ull;
@@ -241,7 +241,7 @@ Test(parse_pieces, sphere_lines_read_fast_parse_as_the_general_path, .timeout = 
  * their first 8 or 15 bytes; lines that end in a space, a '\r', a comment
  * or an extra word, or at the end of the text; the same scene, or the same
  * message, as the general path. */
-Test(parse_pieces, sphere_lines_naming_many_materials_parse_as_the_general_path,
+Test(fast_reader, sphere_lines_naming_many_materials_parse_as_the_general_path,
      .timeout = 60)
 {
   Check c = CHECK("parser_statements", "docs/reliability.md, \"Large scenes\"");
