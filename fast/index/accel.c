@@ -43,7 +43,9 @@ typedef struct Accel {
   unsigned id;      /* this build's number, for the shadow memo */
   BvhNode *nodes;   /* nodes[0] is the root; a leaf holds spheres[index ..
                      * index + meta), in increasing instance order */
-  int *spheres;     /* instance indices of the lit spheres, in leaf order */
+  int *spheres;     /* instance indices of the hierarchy's shapes, in leaf order */
+  Box *boxes;       /* their boxes (scene_instance_bounds), in leaf order, for
+                     * the shadow culling; NULL when they are all spheres */
   int *others;      /* instance indices of everything else, lit ones first */
   int n_others, n_others_lit;
   Cones *cones;     /* small scenes: the spheres' cones seen from the eye and
@@ -319,6 +321,7 @@ static void accel_destroy(Accel *acc)
 {
   free(acc->nodes);
   free(acc->spheres);
+  free(acc->boxes);
   free(acc->others);
   cones_free(acc->cones);
   free(acc);
@@ -358,12 +361,13 @@ static Ball item_ball(const Instance *inst)
   return (Ball){s.center.x, s.center.y, s.center.z, s.radius};
 }
 
-/* The hierarchy over the n lit spheres: instances base .. base + n - 1,
- * read in place, or (base < 0) those whose indices are ids[], copied into
- * balls[]. One leaf of all of them when `flat`, else binned SAH with leaves
- * of at most LEAF_MAX. Leaves list their spheres in instance order. */
+/* The hierarchy over the n shapes: instances base .. base + n - 1 (spheres,
+ * read in place), or (base < 0) those whose indices are ids[], their balls
+ * in balls[]. One leaf of all of them when `flat`, else binned SAH with
+ * leaves of at most LEAF_MAX. Leaves list their shapes in instance order.
+ * `shapes`: some are not spheres, whose boxes acc->boxes then keeps. */
 static bool build_tree(const Scene *scene, Accel *acc, const int *ids, int base,
-                       const Ball *balls, int n, bool flat)
+                       const Ball *balls, int n, bool flat, bool shapes)
 {
   Bvh bvh = {0};
   Balls from = base >= 0 ? (Balls){(const char *)&scene->instances[base].sphere, sizeof(Instance)}
@@ -375,7 +379,12 @@ static bool build_tree(const Scene *scene, Accel *acc, const int *ids, int base,
   for (int k = 0; k < n; k++)
     acc->spheres[k] = base >= 0 ? base + acc->spheres[k] : ids[acc->spheres[k]];
   acc->nodes = bvh.nodes;
-  return true;
+  if (!shapes)
+    return true;
+  acc->boxes = malloc((size_t)n * sizeof *acc->boxes);
+  for (int k = 0; acc->boxes && k < n; k++)
+    acc->boxes[k] = scene_instance_bounds(&scene->instances[acc->spheres[k]]);
+  return acc->boxes != NULL;
 }
 
 enum { BLOCKS_MAX = 256 }; /* blocks of instances sorted at once */
@@ -404,7 +413,8 @@ static bool tree_item(const Scene *scene, int k)
  * which the build reads in place; else -1. The fill is then only that of the
  * few others: one pass over the instances instead of two, and no copy of
  * the spheres. */
-static int sort_instances(const Scene *scene, Accel *acc, int *ids, Ball *balls, int *base)
+static int sort_instances(const Scene *scene, Accel *acc, int *ids, Ball *balls, int *base,
+                          bool *shapes_too)
 {
   int n = scene->n_instances, threads = omp_get_max_threads();
   int blocks = n > 65536 ? (threads < BLOCKS_MAX ? threads : BLOCKS_MAX) : 1;
@@ -440,6 +450,7 @@ static int sort_instances(const Scene *scene, Accel *acc, int *ids, Ball *balls,
   }
   spheres[blocks] = sum;
   *base = blocks > 1 && sum > 0 && !other && hi_all - lo_all + 1 == sum ? lo_all : -1;
+  *shapes_too = other;
   acc->n_others = n - sum;
   if (*base >= 0) { /* the spheres are read in place: the others are before and after them */
     int o = 0;
@@ -514,10 +525,11 @@ bool accel_build(Scene *scene)
     acc->others = malloc(room * sizeof *acc->others);
   bool ok = acc && ids && balls && acc->others;
   int base = -1;
-  int n = ok ? sort_instances(scene, acc, ids, balls, &base) : 0;
+  bool shapes = false;
+  int n = ok ? sort_instances(scene, acc, ids, balls, &base, &shapes) : 0;
   if (ok && n > 0)
     ok = build_tree(scene, acc, ids, base, balls, n,
-                    layout == 1 || (layout < 0 && n <= ACCEL_FLAT_MAX));
+                    layout == 1 || (layout < 0 && n <= ACCEL_FLAT_MAX), shapes);
   free(balls);
   if (ok && layout < 0 && n <= ACCEL_FLAT_MAX) {
     Sphere bounds[ACCEL_FLAT_MAX];
@@ -574,7 +586,9 @@ static bool instance_may_occlude(const Instance *inst, const ShadowHull *h)
   }
 }
 
-/* The traversal of bvh_any, with boxes and shapes tested against the hull;
+/* The traversal of bvh_any, with boxes and shapes tested against the hull
+ * (a sphere by its own test, any other shape by its box, as
+ * instance_may_occlude does);
  * false when more than o->max shapes may meet it. */
 static bool bvh_occluders(const Scene *scene, const Accel *acc, const ShadowHull *h,
                           Occluders *o)
@@ -584,10 +598,14 @@ static bool bvh_occluders(const Scene *scene, const Accel *acc, const ShadowHull
     const BvhNode *nd = &acc->nodes[node];
     if (hull_may_meet_box(h, nd->lo, nd->hi)) {
       if (nd->meta > 0) {
-        for (int k = nd->index; k < nd->index + nd->meta; k++)
-          if (instance_may_occlude(&scene->instances[acc->spheres[k]], h) &&
-              !occluder(o, acc->spheres[k]))
+        for (int k = nd->index; k < nd->index + nd->meta; k++) {
+          const Instance *inst = &scene->instances[acc->spheres[k]];
+          bool may = inst->shape == SHAPE_SPHERE
+                         ? hull_may_meet_sphere(h, inst->sphere.center, inst->sphere.radius)
+                         : hull_may_meet_box(h, acc->boxes[k].min.raw, acc->boxes[k].max.raw);
+          if (may && !occluder(o, acc->spheres[k]))
             return false;
+        }
       } else {
         stack[top++] = nd->index + 1;
         node = nd->index;
