@@ -1,6 +1,6 @@
-/* The registry of shapes: one line per kind of shape in SHAPE_REGISTRY below. The
- * kinds an instance may be (ShapeType, the Instance's union, scene.h), the
- * scene's dispatch (scene_instance_hit_t, its hit fill, scene_instance_bounds,
+/* The registry of shapes: one line per kind of shape in SHAPE_REGISTRY
+ * below. The kinds an instance may be (ShapeType, the Instance's union,
+ * scene.h), the scene's dispatch (scene_instance_hit_t, its hit fill, scene_instance_bounds,
  * scene_shape_name: scene.c), the tests' comparisons and the shape
  * conformance suite (tests/test_shapes.c) are all written from it, so a new
  * shape is its own files and one line here. docs/extending.md, "Adding a

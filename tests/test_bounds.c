@@ -34,8 +34,8 @@ Test(bounds, sphere_cube)
 {
   Check c = CHECK("sphere_bounds", DOC);
   Sphere s = {.center = vec_make(1, 2, 3), .radius = 0.5f};
-  check_box(&c, "sphere centre (1, 2, 3), radius 0.5", sphere_bounds(&s), vec_make(0.5f, 1.5f, 2.5f),
-            vec_make(1.5f, 2.5f, 3.5f), slack(0.5, 3.5));
+  check_box(&c, "sphere centre (1, 2, 3), radius 0.5", sphere_bounds(&s),
+            vec_make(0.5f, 1.5f, 2.5f), vec_make(1.5f, 2.5f, 3.5f), slack(0.5, 3.5));
   Sphere far = {.center = vec_make(-1e5f, 0, 7), .radius = 2.0f};
   check_box(&c, "sphere centre (-1e5, 0, 7), radius 2", sphere_bounds(&far),
             vec_make(-100002.0f, -2, 5), vec_make(-99998.0f, 2, 9), slack(2, 1e5 + 2));
@@ -84,8 +84,8 @@ Test(bounds, disc_extent_per_axis)
   Disc tilted = disc_make(vec_make(1, 2, 3), vec_make(0, 1, 1), 1.0f);
   double h = 1.0 / sqrt(2.0);
   check_box(&c, "disc centre (1, 2, 3), normal (0, 1, 1), radius 1", disc_bounds(&tilted),
-            vec_make(0, (float)(2 - h), (float)(3 - h)), vec_make(2, (float)(2 + h), (float)(3 + h)),
-            slack(1, 4) + 1e-7);
+            vec_make(0, (float)(2 - h), (float)(3 - h)),
+            vec_make(2, (float)(2 + h), (float)(3 + h)), slack(1, 4) + 1e-7);
   CHECK_DONE(&c);
 }
 
