@@ -25,6 +25,11 @@ scratch_sync() {
       cp "$top/$f" "$tree/$f"
     fi
   done < <(git -C "$top" ls-files -z)
+  # Files TOP no longer has (outside TREE's own build/): removed, or a
+  # Makefile's wildcard would still compile them.
+  comm -23 <(cd "$tree" && find . -path ./build -prune -o -type f -print | sed 's|^\./||' | LC_ALL=C sort) \
+           <(cd "$top" && git ls-files | while IFS= read -r f; do [ -e "$f" ] && echo "$f"; done | LC_ALL=C sort) |
+    while IFS= read -r f; do rm -f "$tree/$f"; done
 }
 
 # scratch_restore TOP TREE FILE...: put the tracked content back.
