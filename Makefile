@@ -28,11 +28,10 @@ TESTS_01-film           := film export image
 TESTS_02-intersection   := ray sphere plane disc scene vec
 TESTS_03-camera         := camera parser cli
 TESTS_04-phong          := light phong
-# Steps 05-08 carry step 04's Phong region in their shade.c: they run its tests too.
-TESTS_05-shadows        := shadows shadows_lecture phong
-TESTS_06-ambient        := ambient phong
-TESTS_07-antialiasing   := sampler antialiasing phong
-TESTS_08-area-lights    := area_light phong
+TESTS_05-shadows        := shadows shadows_lecture
+TESTS_06-ambient        := ambient
+TESTS_07-antialiasing   := sampler antialiasing
+TESTS_08-area-lights    := area_light
 STRESS_TESTS := $(patsubst tests/%.c,%,$(wildcard tests/stress_*.c))
 
 # ---------------------------------------------------------------- flags
@@ -345,9 +344,8 @@ bench: bench-deps $(BINS) bench-accuracy
 # The cost of the robust geometry (docs/accuracy.md, "Cost"): step 05's frame
 # with common/'s geometry and with tests/textbook.h's, in one process. Linked
 # without LTO: each side keeps its own functions (docs/accuracy.md says why).
-$(BUILD)/obj/bench/robust-cost.o: CFLAGS += -Itests -Isteps/05-shadows
-$(BUILD)/bin/robust-cost: $(BUILD)/obj/bench/robust-cost.o \
-                          $(BUILD)/obj/steps/05-shadows/shade.o $(LIBCOMMON)
+$(BUILD)/obj/bench/robust-cost.o: CFLAGS += -Itests
+$(BUILD)/bin/robust-cost: $(BUILD)/obj/bench/robust-cost.o $(LIBCOMMON)
 	@mkdir -p $(@D)
 	@echo "LD $@"
 	@$(CC) $(CFLAGS) -fno-lto $(LDFLAGS) $^ $(LDLIBS) -o $@
@@ -385,7 +383,6 @@ help:
 	@echo "  make test         every present step's unit and image tests, the stress, reliability and trace tests, the report"
 	@echo "  make test-step N  step N's unit tests and image test, and the stress tests of steps 1 .. N (N = 1 .. 8)"
 	@echo "  make trace-step N [X Y]  step N's traces against the solution's: the first line that differs"
-	@echo "  make carry N      in a starter tree: copy your code of the steps below N into steps N to 8"
 	@echo "  make report       write $(BUILD)/report/index.html from the last test results"
 	@echo "  make stress [N=K] the numerical stress tests of the steps written so far (or of steps 1 .. K)"
 	@echo "  make test-reliability  the bad-input suite, the number reader, output files, fuzz corpus"

@@ -15,6 +15,7 @@ void scene_init(Scene *scene)
   scene->height = 600;
   scene->samples = 1;
   scene->light_samples = 1;
+  scene->sampler = (Sampler){.kind = SAMPLER_CENTER, .seed = 1};
   camera_init(&scene->camera, vec_make(0.0f, 0.0f, 0.0f), vec_make(0.0f, 0.0f, -1.0f),
               vec_make(0.0f, 1.0f, 0.0f), 45.0f, 1.0f, 800.0f / 600.0f);
 }
@@ -162,6 +163,7 @@ static void analyze(Scene *scene)
 bool scene_prepare(Scene *scene, unsigned features)
 {
   memset(&scene->info, 0, sizeof scene->info);
+  scene->info.shadows = (features & SCENE_SHADOWS) != 0;
   scene->n_instances = scene->n_shapes; /* in case of a second call */
   if (scene->index) { /* built over the instances of a first call */
     scene->index->destroy(scene->index);
@@ -222,20 +224,34 @@ const char *scene_shape_name(ShapeType shape)
   return "?";
 }
 
-bool scene_intersect(const Scene *scene, Ray r, float tmax, Hit *hit)
+const Instance *scene_closest(const Scene *scene, const Ray *r, float *tmax)
 {
+  if (scene->index)
+    return scene->index->closest(scene, r, tmax);
   const Instance *best = NULL;
-  if (scene->index) {
-    best = scene->index->closest(scene, &r, &tmax);
-  } else {
-    for (int k = 0; k < scene->n_instances; k++) {
-      float t = scene_instance_hit_t(&scene->instances[k], r, tmax);
-      if (t < tmax) {
-        tmax = t;
-        best = &scene->instances[k];
-      }
+  for (int k = 0; k < scene->n_instances; k++) {
+    float t = scene_instance_hit_t(&scene->instances[k], *r, *tmax);
+    if (t < *tmax) {
+      *tmax = t;
+      best = &scene->instances[k];
     }
   }
+  return best;
+}
+
+bool scene_any(const Scene *scene, const Ray *r, float tmax)
+{
+  if (scene->index)
+    return scene->index->any(scene, r, tmax);
+  for (int k = 0; k < scene->n_shapes; k++)
+    if (scene_instance_hit_t(&scene->instances[k], *r, tmax) < tmax)
+      return true;
+  return false;
+}
+
+bool scene_intersect(const Scene *scene, Ray r, float tmax, Hit *hit)
+{
+  const Instance *best = scene_closest(scene, &r, &tmax);
   if (!best)
     return false;
   instance_hit_fill(best, r, tmax, hit);
@@ -246,12 +262,7 @@ bool scene_occluded(const Scene *scene, Ray r, float tmax)
 {
   if (scene->no_occluders)
     return false;
-  if (scene->index)
-    return scene->index->any(scene, &r, tmax);
-  for (int k = 0; k < scene->n_shapes; k++)
-    if (scene_instance_hit_t(&scene->instances[k], r, tmax) < tmax)
-      return true;
-  return false;
+  return scene_any(scene, &r, tmax);
 }
 
 Scene scene_view_unoccluded(const Scene *scene)

@@ -11,11 +11,11 @@ make --no-print-directory build/bin/07-antialiasing >/dev/null
 eval "$(make --no-print-directory -s print-flags)"
 # shellcheck disable=SC2086
 $CC $CFLAGS $LDFLAGS -Isteps/07-antialiasing \
-  tools/aa-mistakes.c steps/07-antialiasing/shade.c build/obj/gen/07-antialiasing-scene.o \
+  tools/aa-mistakes.c build/obj/gen/07-antialiasing-scene.o \
   build/libcommon.a $LDLIBS -o $bin/aa-mistakes
 # shellcheck disable=SC2086
 $CC $CFLAGS $LDFLAGS -Isteps/07-antialiasing \
-  tools/aa-samples.c steps/07-antialiasing/shade.c build/obj/gen/07-antialiasing-scene.o \
+  tools/aa-samples.c build/obj/gen/07-antialiasing-scene.o \
   build/libcommon.a $LDLIBS -o $bin/aa-samples
 mkdir -p docs/img
 for s in grid random jitter sobol; do

@@ -4,8 +4,7 @@
 #ifndef RT_APP_H
 #define RT_APP_H
 
-#include "app/render_point.h" /* steps 07, 08: adaptive sampling's lattice */
-#include "app/trace.h"        /* the hooks of --trace and --aov */
+#include "app/render.h"
 
 typedef struct Step {
   const char *name;      /* "04-phong" */

@@ -3,19 +3,13 @@
 #include "app/app.h"
 #include "shade.h"
 
-static vec3s pixel(const Scene *scene, const Film *film, int i, int j, RenderCtx *ctx)
-{
-  vec2s s = film_sample(film, i, j);
-  return shade_trace(scene, camera_ray(&scene->camera, s.x, s.y), ctx);
-}
-
 int main(int argc, char **argv)
 {
   const Step step = {
       .name = "05-shadows",
       .summary = "Step 05: Phong shading with shadows (any-hit shadow rays).",
-      .features = SCENE_CAMERA | SCENE_LIGHTS,
-      .pixel = pixel,
+      .features = SCENE_CAMERA | SCENE_LIGHTS | SCENE_SHADOWS,
+      .pixel = shade_pixel,
   };
   return app_run(argc, argv, &step);
 }

@@ -3,19 +3,14 @@
 #include "app/app.h"
 #include "shade.h"
 
-static vec3s pixel(const Scene *scene, const Film *film, int i, int j, RenderCtx *ctx)
-{
-  vec2s s = film_sample(film, i, j);
-  return shade_trace(scene, camera_ray(&scene->camera, s.x, s.y), ctx);
-}
-
 int main(int argc, char **argv)
 {
   const Step step = {
       .name = "06-ambient",
       .summary = "Step 06: ambient light, and point lights the camera sees.",
-      .features = SCENE_CAMERA | SCENE_LIGHTS | SCENE_AMBIENT | SCENE_LIGHT_SHAPES,
-      .pixel = pixel,
+      .features = SCENE_CAMERA | SCENE_LIGHTS | SCENE_SHADOWS | SCENE_AMBIENT |
+                  SCENE_LIGHT_SHAPES,
+      .pixel = shade_pixel,
   };
   return app_run(argc, argv, &step);
 }
