@@ -13,6 +13,7 @@
 #include "app/app.h"
 #include "app/image.h"
 #include "app/parser.h"
+#include "app/render.h"
 #include "sampler.h"
 #include "shade.h"
 

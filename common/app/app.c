@@ -8,6 +8,7 @@
 
 #include "app/pack.h"
 #include "app/aov.h"
+#include "app/render.h"
 #include "app/cli.h"
 #include "app/image.h"
 #include "app/parser.h"

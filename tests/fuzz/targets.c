@@ -14,6 +14,7 @@
 #include "app/cli.h"
 #include "app/image.h"
 #include "app/parser.h"
+#include "app/render.h"
 #include "app/parser_state.h"
 #include "reader/pieces.h"
 #include "sampler.h"
