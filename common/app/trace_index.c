@@ -110,9 +110,9 @@ static const Instance *traced_closest(const Scene *scene, const Ray *ray, float 
   vec3s eye = t->plain.camera.eye;
   bool camera = !t->replaying && (t->camera_next || (r.o.x == eye.x && r.o.y == eye.y &&
                                                      r.o.z == eye.z));
-  if (!camera) {
+  if (!camera) { /* blocked by a lit shape: lights' shapes never block */
     if (t->replaying || t->mode == TRACE_AOV)
-      shadow_query(t, r, limit, hit != NULL);
+      shadow_query(t, r, limit, hit && hit->material >= 0);
     return hit;
   }
   trace_end_sample(t);
