@@ -96,9 +96,6 @@ CFLAGS  := -std=c11 $(OPT) -g $(OMP_CFLAGS) $(FP_FLAGS) $(FP_FLAGS_$(CC_KIND)) \
            -D_POSIX_C_SOURCE=200809L $(SYS_CFLAGS) \
            -Wall -Wextra -Wpedantic -Wshadow -Wstrict-prototypes \
            -Wmissing-prototypes $(WARN_FLAGS_$(CC_KIND)) $(WERROR) -MMD -MP -Icommon -Ifast
-# TRACE_OFF=1: the trace hooks compiled out (make bench's comparison build;
-# --trace and --aov then record nothing).
-CFLAGS  += $(if $(TRACE_OFF),-DTRACE_COMPILED_OUT)
 PKG_CFLAGS = $(LIB_CFLAGS) $(STB_CFLAGS) $(filter -I%,$(TEST_CFLAGS))
 LDLIBS  := $(OMP_LIBS) $(LIB_LIBS) $(STB_LIBS) -lm
 # Every link but the steps' programs: without LTO (the fat objects' code),

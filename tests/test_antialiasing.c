@@ -149,7 +149,7 @@ static const char ROW_SCENE[] =
 Test(antialiasing, every_pixel_takes_its_own_sample_positions)
 {
   const char *kinds[] = {"random", "jitter", "sobol"};
-  Check c = CHECK("pixel (--adaptive 0): sampler_pattern keyed by ctx->pixel", DOC_KEYS);
+  Check c = CHECK("pixel_sampled (--adaptive 0): sampler_pattern keyed by the pixel", DOC_KEYS);
   for (int s = 0; s < 3; s++)
     for (int seed = 1; seed <= 3; seed++) {
       char args[128], tag[64];
