@@ -11,7 +11,7 @@
 static vec3s point_colour(const Scene *scene, float x, float y)
 {
   float nx = x / (float)scene->width, ny = y / (float)scene->height;
-  return shade_trace(scene, camera_ray(&scene->camera, nx, ny));
+  return shade_sample(scene, nx, ny);
 }
 
 /* Adaptive off: the mean of the N samples of the scene's pattern inside

@@ -42,8 +42,13 @@ vec3s shade_phong(const Scene *scene, const Hit *hit, vec3s eye);
  * an area light L = P / A on its front face and black behind. */
 vec3s shade_trace(const Scene *scene, Ray ray);
 
-/* Render's body for one pixel (steps 04 to 06): the ray through pixel
- * (i, j)'s centre, traced. */
+/* Render's body for one camera sample: the colour seen through the film
+ * point (x, y) in [0,1]^2 (0 the left and bottom edges): the camera's ray
+ * there, traced. */
+vec3s shade_sample(const Scene *scene, float x, float y);
+
+/* Render's body for one pixel (steps 04 to 06): shade_sample at pixel
+ * (i, j)'s centre (film_sample). */
 vec3s shade_pixel(const Scene *scene, const Film *film, int i, int j);
 
 #endif
