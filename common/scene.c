@@ -24,12 +24,7 @@ void scene_free(Scene *scene)
 {
   free(scene->materials);
   free(scene->lights);
-  for (int k = 0; k < scene->n_kept; k++)
-    free(scene->kept[k]);
-  free(scene->kept);
   free(scene->instances);
-  if (scene->index)
-    scene->index->destroy(scene->index);
   scene_init(scene);
 }
 
@@ -60,27 +55,6 @@ bool scene_add_material(Scene *scene, const Material *m)
 bool scene_add_light(Scene *scene, const Light *light)
 {
   return push((void **)&scene->lights, &scene->n_lights, sizeof *light, light);
-}
-
-const void *scene_keep(Scene *scene, const void *shape, size_t size)
-{
-  void *copy = malloc(size);
-  if (!copy) {
-    fprintf(stderr, "scene: out of memory\n");
-    return NULL;
-  }
-  if (!reserve((void **)&scene->kept, scene->n_kept, 1, sizeof *scene->kept)) {
-    free(copy);
-    return NULL;
-  }
-  memcpy(copy, shape, size);
-  scene->kept[scene->n_kept++] = copy;
-  return copy;
-}
-
-const Plane *scene_add_plane(Scene *scene, const Plane *plane)
-{
-  return scene_keep(scene, plane, sizeof *plane);
 }
 
 bool scene_add_instance(Scene *scene, const Instance *inst)
@@ -165,10 +139,7 @@ bool scene_prepare(Scene *scene, unsigned features)
   memset(&scene->info, 0, sizeof scene->info);
   scene->info.shadows = (features & SCENE_SHADOWS) != 0;
   scene->n_instances = scene->n_shapes; /* in case of a second call */
-  if (scene->index) { /* built over the instances of a first call */
-    scene->index->destroy(scene->index);
-    scene->index = NULL;
-  }
+  scene->index = NULL;                  /* built over the instances of a first call */
   if (!(features & SCENE_AMBIENT) && !vec_is_zero(scene->ambient)) {
     scene->info.ignored |= SCENE_AMBIENT;
     scene->ambient = glms_vec3_zero();
@@ -191,37 +162,53 @@ bool scene_prepare(Scene *scene, unsigned features)
   return true;
 }
 
+/* The dispatch to each shape's functions: a switch with a case per line of
+ * SHAPE_REGISTRY (common/shapes.h), e.g. for the disc
+ *   case SHAPE_DISC: return disc_hit_t(inst->disc, r, tmax);
+ * A switch, not a table of function pointers: the compiler inlines each
+ * shape's test into the queries' loops. */
 float scene_instance_hit_t(const Instance *inst, Ray r, float tmax)
 {
+#define HIT_T_(NAME, name, Type, STORE, DOC)                                           \
+  case SHAPE_##NAME: return name##_hit_t(SHAPE_OF(inst, name, STORE), r, tmax);
   switch (inst->shape) {
-  case SHAPE_SPHERE: return sphere_hit_t(&inst->sphere, r, tmax);
-  case SHAPE_PLANE: return plane_hit_t(inst->plane, r, tmax);
-  case SHAPE_QUAD: return quad_hit_t(inst->quad, r, tmax);
-  case SHAPE_DISC: return disc_hit_t(inst->disc, r, tmax);
+    SHAPE_REGISTRY(HIT_T_)
+  case SHAPE_COUNT: break;
   }
+#undef HIT_T_
   return INFINITY;
 }
 
 static void instance_hit_fill(const Instance *inst, Ray r, float t, Hit *hit)
 {
+#define HIT_FILL_(NAME, name, Type, STORE, DOC)                                        \
+  case SHAPE_##NAME: name##_hit_fill(SHAPE_OF(inst, name, STORE), r, t, hit); break;
   switch (inst->shape) {
-  case SHAPE_SPHERE: sphere_hit_fill(&inst->sphere, r, t, hit); break;
-  case SHAPE_PLANE: plane_hit_fill(inst->plane, r, t, hit); break;
-  case SHAPE_QUAD: quad_hit_fill(inst->quad, r, t, hit); break;
-  case SHAPE_DISC: disc_hit_fill(inst->disc, r, t, hit); break;
+    SHAPE_REGISTRY(HIT_FILL_)
+  case SHAPE_COUNT: break;
   }
+#undef HIT_FILL_
   hit->inst = inst;
+}
+
+Box scene_instance_bounds(const Instance *inst)
+{
+#define BOUNDS_(NAME, name, Type, STORE, DOC)                                          \
+  case SHAPE_##NAME: return name##_bounds(SHAPE_OF(inst, name, STORE));
+  switch (inst->shape) {
+    SHAPE_REGISTRY(BOUNDS_)
+  case SHAPE_COUNT: break;
+  }
+#undef BOUNDS_
+  return (Box){vec_make(-INFINITY, -INFINITY, -INFINITY), vec_make(INFINITY, INFINITY, INFINITY)};
 }
 
 const char *scene_shape_name(ShapeType shape)
 {
-  switch (shape) {
-  case SHAPE_SPHERE: return "sphere";
-  case SHAPE_PLANE: return "plane";
-  case SHAPE_QUAD: return "quad";
-  case SHAPE_DISC: return "disc";
-  }
-  return "?";
+#define NAME_(NAME, name, Type, STORE, DOC) [SHAPE_##NAME] = #name,
+  static const char *const names[SHAPE_COUNT] = {SHAPE_REGISTRY(NAME_)};
+#undef NAME_
+  return (unsigned)shape < SHAPE_COUNT ? names[shape] : "?";
 }
 
 const Instance *scene_closest(const Scene *scene, const Ray *r, float *tmax)
@@ -260,14 +247,5 @@ bool scene_intersect(const Scene *scene, Ray r, float tmax, Hit *hit)
 
 bool scene_occluded(const Scene *scene, Ray r, float tmax)
 {
-  if (scene->no_occluders)
-    return false;
   return scene_any(scene, &r, tmax);
-}
-
-Scene scene_view_unoccluded(const Scene *scene)
-{
-  Scene view = *scene;
-  view.no_occluders = true;
-  return view;
 }

@@ -180,9 +180,10 @@ int app_run(int argc, char **argv, const Step *step)
   sampler_parse(o.sampler ? o.sampler : step->sampler ? step->sampler : "center", &kind);
   scene.sampler = (Sampler){.kind = kind, .seed = o.seed,
                             .adaptive = o.adaptive >= 0.0f ? o.adaptive : step->adaptive};
-  RenderSettings set = {.threads = o.threads, .progress = !o.quiet, .sampler = kind};
+  RenderSettings set = {.threads = o.threads, .progress = !o.quiet};
   if (o.trace_x >= 0) {
     int status = run_trace(argc, argv, step, &o, &scene);
+    pack_index_free(&scene);
     scene_free(&scene);
     return status;
   }
@@ -197,6 +198,7 @@ int app_run(int argc, char **argv, const Step *step)
       status = 0;
     film_free(&film);
   }
+  pack_index_free(&scene);
   scene_free(&scene);
   return status;
 }

@@ -31,7 +31,6 @@ typedef struct RenderSettings {
   int threads;        /* 0: one per online core; at most RENDER_MAX_THREADS */
   bool progress;      /* draw a progress bar on stderr */
   RenderWatch *const *watch; /* one per thread, or NULL */
-  SamplerKind sampler; /* scene->sampler.kind, for app/pack.h's light views */
 } RenderSettings;
 
 typedef struct RenderStats {

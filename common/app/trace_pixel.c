@@ -6,6 +6,7 @@
 
 #include <stdlib.h>
 
+#include "app/render_point.h"
 #include "app/trace_index.h"
 
 static const char *tonemap_name(Tonemap tm)
@@ -79,19 +80,25 @@ bool trace_pixel(const Scene *scene, const TraceRequest *req, FILE *out)
   if (!(req->features & SCENE_CAMERA))
     t->camera_doc = TRACE_DOC_FIXED_CAMERA;
   int i = req->x, j = scene->height - 1 - req->y;
-  Film film = {.width = scene->width, .height = scene->height};
+  /* A memo of its own (adaptive sampling's lattice points, step 07), each
+   * run a tile of its own: the pixel traces what the render traces. */
+  Film film = {.width = scene->width, .height = scene->height, .memo = render_memo_new()};
   vec3s term[TERM_COUNT];
-  for (int k = 0; k < TERM_COUNT; k++) /* unrecorded, each term alone */
+  for (int k = 0; k < TERM_COUNT; k++) { /* unrecorded, each term alone */
+    render_memo_next_tile(film.memo);
     term[k] = req->pixel(&t->masked[k], &film, i, j);
+  }
   if (!(req->features & SCENE_SAMPLES))
     trace_vec2(trace_add(&t->lines, 0, "film sample", TRACE_DOC_FILM), "s",
                film_sample(&film, i, j));
   trace_begin_pixel(t);
+  render_memo_next_tile(film.memo);
   vec3s c = req->pixel(&t->scene, &film, i, j);
   trace_end_sample(t);
   bool lit = (req->features & SCENE_LIGHTS) && (t->compact || t->lit);
   end_pixel(t, scene, req, term, lit, c);
   print(t, scene, req, out);
+  free(film.memo);
   trace_free(t);
   free(t);
   return true;
