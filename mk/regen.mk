@@ -16,7 +16,7 @@ REGEN_HOOKS := regen-statements
 
 # What the parts run: the steps' programs, the picture comparison, the trace
 # comparison, the docs' pictures' programs (tools/docimg.sh).
-REGEN_NEEDS = $(BINS) $(BUILD)/bin/imgcmp $(TRACE_DIFF) $(BUILD)/bin/mistakes
+REGEN_NEEDS = $(BINS) $(BUILD)/bin/imgcmp $(BUILD)/bin/trace-diff $(BUILD)/bin/mistakes
 regen: $(REGEN_NEEDS)
 	@REGEN_HOOKS='$(strip $(REGEN_HOOKS))' REGEN_BENCH='$(REGEN_BENCH)' \
 	  tools/regen.sh $(BUILD) $(PRESENT)

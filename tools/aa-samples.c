@@ -14,6 +14,7 @@
 #include "app/image.h"
 #include "app/parser.h"
 #include "app/render.h"
+#include "app/render_point.h"
 #include "sampler.h"
 #include "shade.h"
 
