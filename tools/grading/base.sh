@@ -29,7 +29,6 @@ if [ -f "$dir/ready" ]; then echo "$dir"; exit 0; fi
 rm -rf "$dir" "$cache"/base-*
 mkdir -p "$dir"
 : >"$dir/tests.tsv"
-echo "grade: preparing the base (the solution built with OPT=$opt, its tests run) in $dir" >&2
 
 tools/starter.sh "$dir/solved" 9 >/dev/null
 tools/starter.sh "$dir/stub" 1 >/dev/null
@@ -48,6 +47,8 @@ if grep -q . "$dir/regions.txt" && ! xargs grep -l '/\* BEGIN[ ]SOLUTION step' <
 else
   echo solved >"$dir/solution.txt"
 fi
+echo "grade: preparing the base (the $( [ "$(cat "$dir/solution.txt")" = none ] && echo "starter" ||
+  echo "solution") built with OPT=$opt, its tests run) in $dir" >&2
 
 steps=$(cd steps && ls -d [0-9][0-9]-* | sort)
 targets=$(for s in $steps; do echo "build/bin/$s build/tests/$s"; done)
@@ -68,12 +69,26 @@ make -C "$dir/solved" -s -j"$jobs" OPT="$opt" $targets $stress $traces >"$dir/bu
 . tools/grading/tests.sh
 slower=${GRADE_SLOWER:-10}
 solution=$(cat "$dir/solution.txt")
+# Which programs each step's tests run (runs.tsv: STEP NAME ..., the grader's
+# reuse of a step, checks.sh): while they run, each of build/bin/ is a
+# wrapper that notes its name, then runs the program.
+mkdir -p "$dir/bin.real"
+for b in "$dir"/solved/build/bin/*; do
+  n=${b##*/}
+  mv "$b" "$dir/bin.real/$n"
+  printf '#!/bin/bash\n[ -z "${GRADE_RAN:-}" ] || echo %q >>"$GRADE_RAN"\nexec -a "$0" %q "$@"\n' \
+    "$n" "$dir/bin.real/$n" >"$b"
+  chmod 755 "$b"
+done
 for s in $steps ${stress:+stress}; do
-  (cd "$dir/solved" && build/tests/$s --jobs 1 --tap="$dir/$s.tap" >"$dir/$s.log" 2>&1) || true
+  (cd "$dir/solved" && GRADE_RAN="$dir/$s.ran" build/tests/$s --jobs 1 --tap="$dir/$s.tap" >"$dir/$s.log" 2>&1) || true
+  printf '%s\t%s\n' "$s" "$(sort -u "$dir/$s.ran" 2>/dev/null | tr '\n' ' ')" >>"$dir/runs.tsv"
   tap_times "$dir/$s.tap" | awk -F'\t' -v OFS='\t' -v s="$s" '{ print s, $1, $2, $3, $4 }' >>"$dir/tests.tsv"
   awk -F'\t' -v s="$s" -v k="$slower" -v u="$( [ "$solution" = none ] && echo 600)" \
     '$1 == s { t += $5 } END { printf "%s\t%.2f\t%d\n", s, t, u != "" ? u : 60 + k * t }' "$dir/tests.tsv"
 done >"$dir/limits.tsv"
+for b in "$dir"/bin.real/*; do mv -f "$b" "$dir/solved/build/bin/${b##*/}"; done
+rmdir "$dir/bin.real"
 failing=$(awk -F'\t' '$4 != "ok" { print "  " $1 " " $2 "::" $3 }' "$dir/tests.tsv")
 if [ -n "$failing" ] && [ "$solution" != none ]; then
   echo "grade: warning: the instructor's solution fails these tests (every submission will too):" >&2

@@ -185,8 +185,9 @@ hidden_verdict() {
 
 # ---------------------------------------------------------------- reuse
 # A step's verdicts depend only on the programs that run in it (its test
-# program, its binary, the programs the test program names: test_cli runs
-# every step's --help, the stress tests steps 04 and 05), the hidden scenes
+# program, its binary, the programs its tests ran when the solution was
+# tested, GRADE_BASE/runs.tsv: test_cli runs every step's --help, the stress
+# tests steps 04 and 05), the hidden scenes
 # and the limits (not on the render threads: a render is the same on any
 # number of them). A step whose programs are the same code as a step graded
 # before (the solution's, the untouched starter's, another submission's) takes
@@ -196,13 +197,19 @@ hidden_verdict() {
 # code_hash FILE: the SHA-1 of a program's code and data, without its debug
 # information and build ID (they name the folder it was built in); a unique
 # word when it cannot be read, so it never matches.
+# Each program is hashed once per submission (in the folder HASHES).
 code_hash() {
-  local t
+  local t h memo=""
+  [ -z "${HASHES:-}" ] || memo=$HASHES/$(slug "$1")
+  if [ -n "$memo" ] && [ -f "$memo" ]; then cat "$memo"; return; fi
   t=$(mktemp)
   if safe_file "$1" && timeout 60 objcopy --strip-debug --remove-section=.note.gnu.build-id "$1" "$t" 2>/dev/null
-  then sha1sum <"$t" | cut -c1-40
-  else echo "unread-$$-$RANDOM-$(now)"; fi
+  then
+    h=$(sha1sum <"$t" | cut -c1-40)
+    [ -z "$memo" ] || echo "$h" >"$memo"
+  else h="unread-$$-$RANDOM-$(now)"; fi
   rm -f "$t"
+  echo "$h"
 }
 
 # step_key TREE STEP: what the step's verdicts depend on, hashed.
@@ -210,9 +217,13 @@ step_key() {
   local tree=$1 step=$2 b progs=() scene c s mode seed cost rest
   if [ "$step" = stress ]; then progs=(build/tests/stress); else progs=("build/tests/$step" "build/bin/$step"); fi
   grep -qx "$step" "$GRADE_BASE/traces.txt" 2>/dev/null && progs+=(build/bin/trace-diff)
-  for b in "$tree"/build/bin/*; do
-    grep -qaF -- "${b##*/}" "$tree/${progs[0]}" 2>/dev/null && progs+=("build/bin/${b##*/}")
-  done
+  if [ -f "$GRADE_BASE/runs.tsv" ]; then
+    for b in $(awk -F'\t' -v s="$step" '$1 == s { print $2 }' "$GRADE_BASE/runs.tsv"); do
+      progs+=("build/bin/$b")
+    done
+  else
+    for b in "$tree"/build/bin/*; do progs+=("build/bin/${b##*/}"); done
+  fi
   {
     echo "$GRADE_BASE $SANDBOX_MODE"
     compgen -v | grep '^GRADE_[A-Z_]*\(MIN\|WALL\|SLOWER\|RATIO\|MB\|NPROC\|CPU\)$' | sort |

@@ -61,6 +61,8 @@ info build_seconds "$(seconds_since "$tb")"
 # A step whose programs are those of a step graded before takes its results
 # (checks.sh, "reuse").
 reused=""
+HASHES=$work/hashes
+mkdir -p "$HASHES"
 for step in $(cat "$GRADE_BASE/steps.txt") stress; do
   grep -q "^$step	" "$GRADE_BASE/tests.tsv" || continue
   if built "$tree" "$step"; then
