@@ -7,6 +7,7 @@
 # has one.
 # Usage: tools/grading/check-class.sh OUT   (OUT: where make grade wrote)
 set -uo pipefail
+set -f   # the patterns are matched against check names, never against files
 
 [ $# = 1 ] || { echo "usage: tools/grading/check-class.sh OUT" >&2; exit 2; }
 out=$1
