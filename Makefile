@@ -42,7 +42,7 @@ STRESS_TESTS := $(patsubst tests/%.c,%,$(wildcard tests/stress_*.c))
 # OpenMP flags, LTO, and the libraries' flags from pkg-config.
 CONFIG := $(BUILD)/config.mk
 # Goals that need no compiler: they run without probing it.
-NO_CONFIG_GOALS := clean help deps bench-deps grade-deps clang-deps valgrind-deps
+NO_CONFIG_GOALS := clean help deps bench-deps grade-deps clang-deps valgrind-deps dist
 ifneq ($(MAKECMDGOALS),)
   ifeq ($(filter-out $(NO_CONFIG_GOALS),$(MAKECMDGOALS)),)
     SKIP_CONFIG := 1
@@ -407,6 +407,7 @@ help:
 	@echo "  make check-regions-ci  check-regions for the intersection, camera, film and shading regions (CI)"
 	@echo "  make regions      list the solution regions"
 	@echo "  make starter      write the student starter tree to $(BUILD)/starter (N=5: steps 1-4 stay solved)"
+	@echo "  make dist         the starter as handed out: $(BUILD)/dist/raytracer-starter.tar.gz (no git needed to build, test, grade)"
 	@echo "  make mutants      run the realistic student bugs through every step, write docs/mutants.md"
 	@echo "  make valgrind     the whole suite under valgrind"
 	@echo "Grading (docs/grading.md)"

@@ -4,13 +4,16 @@
 
 # Debian packages the grader needs: jq (Gradescope's results.json), parallel
 # (submissions side by side, and on other hosts), bubblewrap (the sandbox);
-# chromium for the pages' test, slurm-wlm and munge for the Slurm test.
+# chromium for the pages' test, slurm-wlm and munge for the Slurm test. As
+# root they are installed, each install announced first with what it is for
+# (DEPS_INSTALL=0: named, not installed).
 DEB_GRADE       := jq parallel bubblewrap zip unzip
 DEB_GRADE_PAGES := chromium
 DEB_GRADE_SLURM := slurm-wlm munge
 
 grade-deps: $(BUILD)/.deps
-	@$(call need_debs,$(DEB_GRADE))
+	@DEBS_FOR="the grader (jq: results, parallel: submissions side by side, bubblewrap: the sandbox, zip/unzip: archives)" \
+	  $(call need_debs,$(DEB_GRADE))
 
 # The grader's picture comparison, linked with the instructor's library.
 $(BUILD)/bin/grade-compare: $(BUILD)/obj/tools/grading/compare.o $(LIBCOMMON)
@@ -33,30 +36,33 @@ sample-class:
 # make test-grade (part of make check) grades the sample class (in parallel,
 # with the sample hidden scenes), checks every verdict against
 # sample-class.txt, the pages in Chromium and the Gradescope autograder on one
-# submission. A test's limit is at least 3 s there, not 5 (docs/grading.md,
+# submission (with GRADE_TEST_MIN=3, as the class: it reuses the class's
+# results). A test's limit is at least 3 s there, not 5 (docs/grading.md,
 # "The sample class").
 GRADE_TEST := $(BUILD)/grade-test
 GRADE_SAMPLE_HIDDEN := tools/grading/sample-hidden
 grade-test-deps: grade-deps
-	-@$(call need_debs,$(DEB_GRADE_PAGES))
+	-@DEBS_FOR="make test-grade's look at the grading pages in headless Chromium" $(call need_debs,$(DEB_GRADE_PAGES))
 test-grade: grade-test-deps $(BUILD)/bin/grade-compare $(BUILD)/bin/report-check
 	@if [ ! -x tools/mutate.sh ]; then \
 	  echo "SKIP  grading the sample class: tools/mutate.sh (make mutants) is not in this tree"; exit 0; fi; \
-	t0=$$(date +%s); \
+	t0=$$(date +%s); export GRADE_TEST_MIN=3; \
 	tools/grading/sample-class.sh $(GRADE_TEST)/class >/dev/null && \
-	GRADE_TEST_MIN=3 tools/grade SUBMISSIONS=$(GRADE_TEST)/class HIDDEN=$(GRADE_SAMPLE_HIDDEN) \
+	tools/grade SUBMISSIONS=$(GRADE_TEST)/class HIDDEN=$(GRADE_SAMPLE_HIDDEN) \
 	  OUT=$(GRADE_TEST)/out $(if $(JOBS),JOBS=$(JOBS)) >$(GRADE_TEST)/grade.log 2>&1 || { cat $(GRADE_TEST)/grade.log; exit 1; }; \
 	tools/grading/check-class.sh $(GRADE_TEST)/out | sed 's/^check-class: /      /' > $(GRADE_TEST)/check.log; \
 	st=$${PIPESTATUS[0]}; \
-	if [ $$st = 0 ]; then echo "PASS  grading the sample class: every verdict as expected ($$(($$(date +%s) - t0)) s)"; \
+	if [ $$st = 0 ]; then echo "PASS  grading the sample class: every verdict as expected ($$(($$(date +%s) - t0)) s," \
+	  "load $$(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null))"; \
 	else echo "FAIL  grading the sample class:"; cat $(GRADE_TEST)/check.log; exit 1; fi; \
 	REPORT_CHECK=$(BUILD)/bin/report-check tools/grading/page-test.sh $(GRADE_TEST)/out correct larger-root && \
-	tools/gradescope/test.sh $(GRADE_TEST)/class $(GRADE_TEST)/out area-no-cos
+	tools/gradescope/test.sh $(GRADE_TEST)/class $(GRADE_TEST)/out area-no-cos && \
+	echo "      make test-grade: $$(($$(date +%s) - t0)) s in all"
 
 # The same class through a Slurm job array on a one-node Slurm started for
 # the test (as root), compared with the local grading. Not in make check.
 test-grade-slurm: test-grade
-	-@$(call need_debs,$(DEB_GRADE_SLURM))
+	-@DEBS_FOR="a one-node Slurm for make test-grade-slurm" $(call need_debs,$(DEB_GRADE_SLURM))
 	@tools/grading/slurm-test.sh $(GRADE_TEST)/class $(GRADE_SAMPLE_HIDDEN) $(GRADE_TEST)/out
 
 # Two submissions through GNU parallel --sshlogin on two host names, with a

@@ -11,8 +11,10 @@
 #                                   pacman as root; brew as the user)
 #   tools/deps.sh debs PKG...       Debian packages of the optional targets
 #                                   (bench, grading, sanitizers): installed as
-#                                   root, else the apt-get command; on other
-#                                   systems a note naming them
+#                                   root, saying which and (DEBS_FOR) what for
+#                                   first, else (or with DEPS_INSTALL=0) the
+#                                   apt-get command; on other systems a note
+#                                   naming them
 #   tools/deps.sh config CC [STB]   the make variables of this compiler and
 #                                   system ($(BUILD)/config.mk); STB=headers
 #                                   uses stb as headers even where libstb is
@@ -250,12 +252,14 @@ debs() {
       missing="$missing $p"
   done
   [ -z "$missing" ] && return 0
-  if [ "$(id -u)" = 0 ]; then
-    echo "make: installing Debian packages:$missing"
+  if [ "$(id -u)" = 0 ] && [ "${DEPS_INSTALL:-1}" != 0 ]; then
+    echo "make: installing Debian packages${DEBS_FOR:+ for $DEBS_FOR}:$missing" \
+         "(apt-get install, as root; DEPS_INSTALL=0 only names them)"
     # shellcheck disable=SC2086
     apt_install $missing || { echo "make: apt-get install failed"; return 1; }
+    echo "make: installed:$missing"
   else
-    echo "make: missing Debian packages. Install them with:"
+    echo "make: missing Debian packages${DEBS_FOR:+ for $DEBS_FOR}. Install them with:"
     echo "  sudo apt-get update && sudo apt-get install -y$missing"
     return 1
   fi

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Write the student starter tree: the tracked files (git ls-files) copied to
-# DIR, every solution region replaced by a TODO(step NN) line and its stub
-# between /* BEGIN step NN: FUNCTION */ and /* END step NN */.
+# Write the student starter tree: the tree's files (git ls-files in a
+# checkout, every file in a copy without git: tools/files.sh) copied to DIR,
+# every solution region replaced by a TODO(step NN) line and its stub between
+# /* BEGIN step NN: FUNCTION */ and /* END step NN */.
 # Usage: tools/starter.sh DIR [N]   (N: keep the solutions of steps below N)
 # docs/instructors.md, "The starter tree", explains the regions and what a student gets.
 set -euo pipefail
@@ -14,8 +15,8 @@ keep_below=${2:-1}
 keep_below=$((10#$keep_below))
 
 dir=$(realpath -m -- "$dir")   # relative to where the script was called from
-top=$(git -C "$(dirname "$0")" rev-parse --show-toplevel 2>/dev/null) || {
-  echo "starter: not inside a git checkout (the starter is made from git ls-files)" >&2; exit 1; }
+. "$(dirname "$0")/files.sh"
+top=$(tree_top)
 cd "$top"
 # DIR is removed and rewritten: never the checkout, a parent of it, or a
 # tracked folder; inside the checkout only under build/.
@@ -39,7 +40,6 @@ tmp=$(mktemp -d "${TMPDIR:-/tmp}/starter.XXXXXX")
 trap 'rm -rf "$tmp"' EXIT
 regions=0; files=0
 while IFS= read -r -d '' f; do
-  [ -e "$f" ] || continue                     # deleted in the working tree
   # The mutants' 'from' texts quote the solution: instructors only.
   case "$f" in tools/mutants/*) continue ;; esac
   mkdir -p "$tmp/tree/$(dirname "$f")"
@@ -53,7 +53,7 @@ while IFS= read -r -d '' f; do
   else
     cp -p "$f" "$tmp/tree/$f"
   fi
-done < <(git ls-files -z)
+done < <(tree_files "$top")
 
 # The starter keeps -Werror, except for what a stub leaves unused (parameters,
 # variables, static helpers the solution called): still shown as warnings, they

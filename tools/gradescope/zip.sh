@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The Gradescope autograder (docs/grading.md, "Gradescope"): ZIP holds
-# setup.sh and run_autograder at its root, the course tree (the tracked
-# files, git ls-files, as in this checkout) in course/, the hidden scenes in
+# setup.sh and run_autograder at its root, the course tree (its files,
+# tools/files.sh: git ls-files in a checkout) in course/, the hidden scenes in
 # hidden/ and the points scheme as points.txt.
 # Usage: tools/gradescope/zip.sh ZIP [HIDDEN] [POINTS]
 set -euo pipefail
@@ -10,14 +10,14 @@ set -euo pipefail
 zip_path=$(realpath -m -- "$1")
 hidden=${2:-}
 points=${3:-tools/grading/points.txt}
-top=$(git -C "$(dirname "$0")" rev-parse --show-toplevel)
+. "$(dirname "$0")/../files.sh"
+top=$(tree_top)
 [ -z "$hidden" ] || hidden=$(realpath -- "$hidden")
 points=$(realpath -- "$points")
 cd "$top"
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/gradescope.XXXXXX")
 trap 'rm -rf "$tmp"' EXIT
-git ls-files -z | while IFS= read -r -d '' f; do
-  [ -e "$f" ] || continue
+tree_files "$top" | while IFS= read -r -d '' f; do
   mkdir -p "$tmp/course/$(dirname "$f")" && cp -p "$f" "$tmp/course/$f"
 done
 cp -p tools/gradescope/setup.sh tools/gradescope/run_autograder "$tmp/"

@@ -1,33 +1,40 @@
 #!/usr/bin/env bash
 # make test-grade's check of the grader on the sample class (docs/grading.md,
 # "The sample class"): every submission of tools/grading/sample-class.txt must
-# fail exactly the checks its "fails:" line names, and its total in
-# grades.csv must be the maximum less the points of those checks.
+# fail exactly the checks its "fails:" line names (a pattern, or !pattern for
+# checks it passes among those), and its total in grades.csv must be the
+# maximum less the points of those checks, and the "total:" line's where it
+# has one.
 # Usage: tools/grading/check-class.sh OUT   (OUT: where make grade wrote)
 set -uo pipefail
+set -f   # the patterns are matched against check names, never against files
 
 [ $# = 1 ] || { echo "usage: tools/grading/check-class.sh OUT" >&2; exit 2; }
 out=$1
-top=$(git -C "$(dirname "$0")" rev-parse --show-toplevel)
-list=$top/tools/grading/sample-class.txt
+list=$(cd "$(dirname "$0")" && pwd)/sample-class.txt
 bad=0
 
-# The expected failures of each submission: NAME <tab> patterns.
+# The expected failures of each submission: NAME <tab> patterns <tab> total.
 # A "fails:" line may go on over the indented lines after it.
-expected=$(awk 'function flush() { if (name != "") print name "\t" f; name = "" }
-                /^[ \t]+fails:/ { sub(/^[ \t]*fails:[ \t]*/, ""); f = $0; next }
-                /^[ \t]+[^ \t]/ { f = f " " $0; next }
-                /^[^ \t#]/ { flush(); name = $1; f = "" }
+expected=$(awk 'function flush() { if (name != "") print name "\t" f "\t" t; name = "" }
+                /^[ \t]+fails:/ { sub(/^[ \t]*fails:[ \t]*/, ""); f = $0; more = 1; next }
+                /^[ \t]+total:/ { t = $2; more = 0; next }
+                /^[ \t]+[^ \t]/ && more { f = f " " $0; next }
+                /^[^ \t#]/ { flush(); name = $1; f = ""; t = ""; more = 0 }
                 END { flush() }' "$list" | tr -s ' ')
 max=$(awk -F'\t' '{ s += $2 } END { print s + 0 }' "$out/points.tsv")
 
-while IFS=$'\t' read -r name patterns; do
+while IFS=$'\t' read -r name patterns total_want; do
   if [ ! -f "$out/students/$name/checks.tsv" ]; then
     echo "check-class: $name: not graded (no $out/students/$name/checks.tsv)"; bad=1; continue
   fi
   # The checks the patterns name, among all checks of the class.
   want=$(cut -f1 "$out/points.tsv" | while read -r c; do
-           for p in $patterns; do [ "$p" != - ] && [[ "$c" == $p ]] && { echo "$c"; break; }; done
+           hit=0
+           for p in $patterns; do
+             case $p in -) ;; !*) [[ "$c" == ${p#!} ]] && { hit=0; break; } ;; *) [[ "$c" == $p ]] && hit=1 ;; esac
+           done
+           [ $hit = 0 ] || echo "$c"
          done | sort)
   got=$(awk -F'\t' '$2 != "PASS" { print $1 }' "$out/students/$name/checks.tsv" | sort)
   missing=$(cut -f1 "$out/points.tsv" | sort | comm -23 - <(cut -f1 "$out/students/$name/checks.tsv" | sort))
@@ -41,6 +48,8 @@ while IFS=$'\t' read -r name patterns; do
     bad=1
   elif [ "$total" != "$((max - lost))" ]; then
     echo "check-class: $name: total $total in grades.csv, expected $max - $lost"; bad=1
+  elif [ -n "$total_want" ] && [ "$total" != "$total_want" ]; then
+    echo "check-class: $name: total $total in grades.csv, expected $total_want (its total: line)"; bad=1
   else
     echo "check-class: $name: $total / $max, fails exactly: $(echo ${want:--})"
   fi

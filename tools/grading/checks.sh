@@ -137,8 +137,7 @@ run_hidden() {
   [ -s "$GRADE_PLAN" ] || return 0
   while IFS=$'\t' read -r c s scene mode seed cost refs; do
     [ "$s" = "$step" ] || continue
-    wall=${GRADE_RENDER_WALL:-$(awk -v c="$cost" -v k="${GRADE_SLOWER:-10}" -v n="$GRADE_THREADS" \
-      -v m="${GRADE_RENDER_MIN:-5}" 'BEGIN { w = k * c / n; printf "%d", w < m ? m : w + 1 }')}
+    wall=$(hidden_wall "$cost")
     out=$tree/.grade-out/$(slug "$c").pfm
     cp "$scene" "$tree/.grade-out/scene.scene" && sandbox_own "$tree/.grade-out"
     sandbox_run "$wall" $((wall * GRADE_THREADS)) "$res/logs/$(slug "$c").log" "$tree" -- \
@@ -159,6 +158,13 @@ run_hidden() {
   done <"$GRADE_PLAN"
 }
 
+# hidden_wall COST: the wall-time limit of a hidden render that took the
+# solution COST seconds of one thread.
+hidden_wall() {
+  echo "${GRADE_RENDER_WALL:-$(awk -v c="$1" -v k="${GRADE_SLOWER:-10}" -v n="$GRADE_THREADS" \
+    -v m="${GRADE_RENDER_MIN:-5}" 'BEGIN { w = k * c / n; printf "%d", w < m ? m : w + 1 }')}"
+}
+
 # hidden_verdict CHECK MODE LINE: the check from grade-compare's line.
 hidden_verdict() {
   local c=$1 line=$3
@@ -173,4 +179,89 @@ hidden_verdict() {
     why="${v[over]} channels over ${v[tol]}/255 ($(awk -v f="${v[fraction]}" 'BEGIN { printf "%.3f", 100 * f }')%, allowed $(awk -v f="${v[allowed_fraction]}" 'BEGIN { printf "%.3f", 100 * f }')%), max ${v[max]}/255 (allowed ${v[allowed_max]}/255)"
   fi
   if [ "${v[pass]}" = 1 ]; then check "$c" PASS "$why"; else check "$c" FAIL "$why"; fi
+}
+
+# ---------------------------------------------------------------- reuse
+# A step's verdicts depend only on the programs that run in it (its test
+# program, its binary, the programs its tests ran when the solution was
+# tested, GRADE_BASE/runs.tsv: test_cli runs every step's --help, the stress
+# tests steps 04 and 05), the hidden scenes
+# and the limits (not on the render threads: a render is the same on any
+# number of them). A step whose programs are the same code as a step graded
+# before (the solution's, the untouched starter's, another submission's) takes
+# that step's results from GRADE_BASE/steps/KEY (docs/grading.md, "How a
+# submission is graded").
+
+# code_hash FILE: the SHA-1 of a program's code and data, without its debug
+# information and build ID (they name the folder it was built in); a unique
+# word when it cannot be read, so it never matches.
+# Each program is hashed once per submission (in the folder HASHES).
+code_hash() {
+  local t h memo=""
+  [ -z "${HASHES:-}" ] || memo=$HASHES/$(slug "$1")
+  if [ -n "$memo" ] && [ -f "$memo" ]; then cat "$memo"; return; fi
+  t=$(mktemp)
+  if safe_file "$1" && timeout 60 objcopy --strip-debug --remove-section=.note.gnu.build-id "$1" "$t" 2>/dev/null
+  then
+    h=$(sha1sum <"$t" | cut -c1-40)
+    [ -z "$memo" ] || echo "$h" >"$memo"
+  else h="unread-$$-$RANDOM-$(now)"; fi
+  rm -f "$t"
+  echo "$h"
+}
+
+# step_key TREE STEP: what the step's verdicts depend on, hashed.
+step_key() {
+  local tree=$1 step=$2 b progs=() scene c s mode seed cost rest
+  if [ "$step" = stress ]; then progs=(build/tests/stress); else progs=("build/tests/$step" "build/bin/$step"); fi
+  grep -qx "$step" "$GRADE_BASE/traces.txt" 2>/dev/null && progs+=(build/bin/trace-diff)
+  if [ -f "$GRADE_BASE/runs.tsv" ]; then
+    for b in $(awk -F'\t' -v s="$step" '$1 == s { print $2 }' "$GRADE_BASE/runs.tsv"); do
+      progs+=("build/bin/$b")
+    done
+  else
+    for b in "$tree"/build/bin/*; do progs+=("build/bin/${b##*/}"); done
+  fi
+  {
+    echo "$GRADE_BASE $SANDBOX_MODE"
+    compgen -v | grep '^GRADE_[A-Z_]*\(MIN\|WALL\|SLOWER\|RATIO\|MB\|NPROC\|CPU\)$' | sort |
+      while read -r b; do echo "$b=${!b}"; done
+    for b in $(printf '%s\n' "${progs[@]}" | sort -u); do echo "$b $(code_hash "$tree/$b")"; done
+    if [ -s "$GRADE_PLAN" ]; then
+      while IFS=$'\t' read -r c s scene mode seed cost rest; do
+        [ "$s" = "$step" ] && echo "$c $(sha1sum <"$scene") $mode $seed $(hidden_wall "$cost") $rest"
+      done <"$GRADE_PLAN"
+    fi
+  } | sha1sum | cut -c1-40
+}
+
+# step_copy FROM TO STEP: the step's lines of checks.tsv and pictures.tsv and
+# its files in details/, pictures/ and logs/ (all named after the step).
+step_copy() {
+  local from=$1 to=$2 step=$3 d f
+  for d in details pictures logs; do
+    mkdir -p "$to/$d"
+    for f in "$from/$d/$step".* "$from/$d/${step}"_*; do [ ! -f "$f" ] || cp -p "$f" "$to/$d/"; done
+  done
+  for f in checks.tsv pictures.tsv; do
+    [ -f "$from/$f" ] && awk -v p="$step/" 'index($0, p) == 1' "$from/$f" >>"$to/$f"
+  done
+  return 0
+}
+
+# step_reuse KEY STEP: the results of an earlier step with KEY, if any.
+step_reuse() {
+  [ -f "$GRADE_BASE/steps/$1/done" ] || return 1
+  step_copy "$GRADE_BASE/steps/$1" "$res" "$2"
+}
+
+# step_save KEY STEP: keep this step's results under KEY.
+step_save() {
+  local dir=$GRADE_BASE/steps/$1 tmp
+  [ -d "$dir" ] && return 0
+  mkdir -p "$GRADE_BASE/steps"
+  tmp=$(mktemp -d "$GRADE_BASE/steps/.new.XXXXXX")
+  step_copy "$res" "$tmp" "$2"
+  touch "$tmp/done"
+  mv -T "$tmp" "$dir" 2>/dev/null || rm -rf "$tmp"
 }

@@ -78,7 +78,7 @@ student_page() {
   echo "<p><a href=\"../../index.html\">class</a></p>"
   echo "<h1>$(printf '%s' "$st" | esc) <small>$total / $max points</small></h1>"
   echo "<table class='grade'>"
-  for k in kind source host sandbox build build_seconds seconds; do
+  for k in kind source host sandbox build build_seconds reused seconds; do
     printf '<tr><th>%s</th><td>%s</td></tr>\n' "${k//_/ }" "$(info_get "$d" $k | esc)"
   done
   echo "</table>"

@@ -14,9 +14,11 @@ here=$(cd "$(dirname "$0")" && pwd)
 . "$here/checks.sh"
 . "$here/html.sh"
 
-# Every check, in order, with its points (the first matching rule).
+# Every check, in order, with its points (the first matching rule), or 0 with
+# the word "starter" when the untouched starter passes it (GRADE_REF: tools/grade).
+starter_checks=${GRADE_REF:+$GRADE_REF/students/stub/checks.tsv}
 for s in $(cat "$GRADE_BASE/steps.txt") stress; do step_checks "$s"; done |
-  awk -v scheme="$points" '
+  awk -v scheme="$points" -v starter="${starter_checks:-/dev/null}" '
     BEGIN {
       while ((getline line < scheme) > 0) {
         sub(/#.*/, "", line); k = split(line, g, " ")
@@ -25,19 +27,22 @@ for s in $(cat "$GRADE_BASE/steps.txt") stress; do step_checks "$s"; done |
         re = g[1]; gsub(/[.+^$(){}|\[\]\\]/, "\\\\&", re); gsub(/\*/, ".*", re); gsub(/\?/, ".", re)
         rule[++r] = "^" re "$"; pts[r] = g[2]
       }
+      while ((getline line < starter) > 0) { split(line, g, "\t"); if (g[2] == "PASS") given[g[1]] = 1 }
     }
-    { p = 0; for (i = 1; i <= r; i++) if ($0 ~ rule[i]) { p = pts[i]; break }; print $0 "\t" p }
+    { p = 0; for (i = 1; i <= r; i++) if ($0 ~ rule[i]) { p = pts[i]; break }
+      if ($0 in given) print $0 "\t0\tstarter"; else print $0 "\t" p }
   ' >"$out/points.tsv"
 
 students=$(cd "$out/students" 2>/dev/null && ls | sort || true)
 
 # The points a student got for each check: STUDENT CHECK STATUS POINTS WHY.
 for st in $students; do
-  awk -F'\t' -v who="$st" 'FILENAME == ARGV[1] { p[$1] = $2; order[++n] = $1; next }
+  awk -F'\t' -v who="$st" 'FILENAME == ARGV[1] { p[$1] = $2; order[++n] = $1; if ($3 == "starter") given[$1] = 1; next }
        { v[$1] = $2; why[$1] = $3 }
        END { for (i = 1; i <= n; i++) { c = order[i]; s = (c in v) ? v[c] : "FAIL"
-               printf "%s\t%s\t%s\t%s\t%s\n", who, c, s, s == "PASS" ? p[c] : 0,
-                      (c in v) ? why[c] : "not graded (the grader stopped before this check)" } }' \
+               printf "%s\t%s\t%s\t%s\t%s%s\n", who, c, s, s == "PASS" ? p[c] : 0,
+                      (c in v) ? why[c] : "not graded (the grader stopped before this check)",
+                      (c in given) ? " (worth 0: the untouched starter passes it too)" : "" } }' \
     "$out/points.tsv" "$out/students/$st/checks.tsv" 2>/dev/null ||
   awk -F'\t' -v who="$st" '{ printf "%s\t%s\tFAIL\t0\tnot graded\n", who, $1 }' "$out/points.tsv"
 done >"$out/scores.tsv"

@@ -8,7 +8,8 @@
 set -euo pipefail
 
 [ $# = 1 ] || { echo "usage: tools/grading/sample-class.sh DIR" >&2; exit 2; }
-top=$(git -C "$(dirname "$0")" rev-parse --show-toplevel)
+. "$(dirname "$0")/../files.sh"
+top=$(tree_top)
 cd "$top"
 [ -x tools/mutate.sh ] || { echo "sample-class: tools/mutate.sh is missing (make mutants brings it)" >&2; exit 1; }
 out=$(realpath -m -- "$1")

@@ -10,9 +10,12 @@ tap_times() {
 }
 
 # The test's own time limit: GRADE_SLOWER (10) times the solution's time, at
-# least GRADE_TEST_MIN (5) seconds.
+# least GRADE_TEST_MIN (5) seconds; in a starter's base, whose times are the
+# stubs', GRADE_UNSOLVED_TEST_MIN (60).
 test_timeouts() {
-  awk -F'\t' -v s="$1" -v k="${GRADE_SLOWER:-10}" -v m="${GRADE_TEST_MIN:-5}" \
+  local m=${GRADE_TEST_MIN:-5}
+  [ "$(cat "$GRADE_BASE/solution.txt" 2>/dev/null)" != none ] || m=${GRADE_UNSOLVED_TEST_MIN:-60}
+  awk -F'\t' -v s="$1" -v k="${GRADE_SLOWER:-10}" -v m="$m" \
     '$1 == s { t = k * $5; printf "%s::%s %d\n", $2, $3, t < m ? m : t + 1 }' "$GRADE_BASE/tests.tsv"
 }
 
