@@ -376,7 +376,7 @@ check:
 	echo "make check: every stage passed"
 
 # The files derived from the sources are up to date, every citation exists.
-check-derived: check-diffs check-refs check-mutants check-images check-traces
+check-derived: check-diffs check-refs check-mutants check-diagnoses check-images check-traces
 .PHONY: check check-derived
 
 help:
