@@ -77,14 +77,17 @@ targets() {
   echo "build/tests/$name build/tests/stress"
   case $1 in 05|06|07|08) echo "build/bin/04-phong build/bin/05-shadows build/bin/mistakes" ;; esac
 }
-# run_step S SIGFILE LOG: step S's tests and its own stress tests, as make
-# test-step S runs them (the earlier steps' stress tests do not run the
-# mistake: it is in step S's code); 0 when they pass.
+# run_step S SIGFILE LOG: step S's tests, then, when they pass, its own
+# stress tests (the earlier steps' do not run the mistake: it is in step S's
+# code; a mistake the step's tests catch is named on their lines); 0 when
+# they pass.
 run_step() {
   local name
   name=$(scratch_step_name "$tree" "$1")
   (cd "$tree" && RT_CACHE=0 RT_STRESS_ONLY=$1 RT_SIGNATURES=$2 RESULTS_DIR=$work/results \
-     timeout 900 tests/run.sh "build/tests/$name" build/tests/stress) >"$3" 2>&1
+     timeout 900 tests/run.sh "build/tests/$name" &&
+   RT_CACHE=0 RT_STRESS_ONLY=$1 RT_SIGNATURES=$2 RESULTS_DIR=$work/results \
+     timeout 900 tests/run.sh build/tests/stress) >"$3" 2>&1
 }
 build() {
   make -C "$tree" --no-print-directory -j"${JOBS:-2}" "${opt[@]}" "$@" >"$tree/build/make.log" 2>&1
