@@ -29,16 +29,20 @@ pattern=${1:-}
 scratch_top diagnoses
 table=tests/diagnoses.tsv
 
-# What the signatures depend on: the mutants, the files they change, the
-# tests (the tracer's excepted: no step's test binary holds them) and the
-# verdict printer, the reference images and the scenes. Their
-# hash heads the table; a change to any of them makes it stale.
+# What the signatures depend on: the bugs (tools/mutants/, kind: bug; the
+# correct alternatives give none), the files they change, the tests (the
+# tracer's excepted: no step's test binary holds them) and the verdict
+# printer that forms the signature (tests/results.awk), the reference images
+# and the scenes. Their hash heads the table; a change to any of them makes
+# it stale.
 inputs_hash() {
-  local globs
-  globs=$(sed -n 's/^file:[ \t]*//p' tools/mutants/*.mut | sort -u)
+  local bugs globs
+  bugs=$(grep -l '^kind:[ \t]*bug[ \t]*$' tools/mutants/*.mut)
   # shellcheck disable=SC2086
-  { ls tools/mutants/*.mut; for g in $globs; do ls $g 2>/dev/null; done
-    ls tests/*.c tests/*.h tests/results.awk tools/diagnoses.sh images/* scenes/* 2>/dev/null
+  globs=$(sed -n 's/^file:[ \t]*//p' $bugs | sort -u)
+  # shellcheck disable=SC2086
+  { ls $bugs; for g in $globs; do ls $g 2>/dev/null; done
+    ls tests/*.c tests/*.h tests/results.awk images/* scenes/* 2>/dev/null
   } | grep -v '^tests/test_trace\.c$' | sort -u | while IFS= read -r f; do
     [ -f "$f" ] && printf '%s %s\n' "$(sha1sum < "$f" | cut -c1-40)" "$f"
   done | sha1sum | cut -c1-40
