@@ -132,7 +132,7 @@ for m in "${mutants[@]}"; do
     if [ $mode = measure ]; then
       # Caught (a FAIL line), and the FAIL lines' diagnoses.
       caught=$(grep -c '^FAIL ' "$work/logs/$id.log")
-      own=$(grep '^FAIL ' "$work/logs/$id.log" | grep -cF "looks like $what")
+      own=$(grep '^FAIL .*looks like ' "$work/logs/$id.log" | sed 's/.*looks like //' | grep -cF "$what")
       any=$(grep '^FAIL ' "$work/logs/$id.log" | grep -c 'looks like ')
       printf '%s\t%s\t%s\t%s\t%s\t%s\n' "$id" "$kind" "$caught" "$own" "$any" "$what" >>"$results"
       printf '%-34s %-22s FAIL lines %s, naming it %s, any diagnosis %s\n' "$id" "$kind" "$caught" "$own" "$any"
