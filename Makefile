@@ -23,9 +23,15 @@ SCENE_06-ambient      := scenes/ambient.scene
 SCENE_07-antialiasing := scenes/antialiasing.scene
 SCENE_08-area-lights  := scenes/area-lights.scene
 
+# The shapes of the registry (common/shapes.h, one X(NAME, name, ...) line
+# each) that have a test of their own, tests/test_<name>.c: step 02 runs
+# them, beside the conformance suite (tests/test_shapes.c) that checks all.
+SHAPE_NAMES := $(shell sed -n 's/^ *X.[A-Z0-9_]*, *\([a-z0-9_]*\),.*/\1/p' common/shapes.h)
+SHAPE_TESTS := $(foreach s,$(SHAPE_NAMES),$(if $(wildcard tests/test_$(s).c),$(s)))
+
 # Each step's unit tests: tests/test_<name>.c (make test-step N runs them).
 TESTS_01-film           := film export image
-TESTS_02-intersection   := ray sphere plane disc scene vec
+TESTS_02-intersection   := ray $(SHAPE_TESTS) scene vec bounds shapes
 TESTS_03-camera         := camera parser cli
 TESTS_04-phong          := light phong
 # Steps 05-08 carry step 04's Phong region in their shade.c: they run its tests too.

@@ -29,3 +29,33 @@ void disc_hit_fill(const Disc *d, Ray r, float t, Hit *hit)
 {
   flat_hit_fill(d->center, d->normal, r, t, hit);
 }
+
+Box disc_bounds(const Disc *d)
+{
+  /* sqrt(1 - n_x^2) as sqrt(n_y^2 + n_z^2): no cancellation for n near an
+   * axis. */
+  vec3s n2 = glms_vec3_mul(d->normal, d->normal);
+  vec3s half = glms_vec3_scale(vec_make(sqrtf(n2.y + n2.z), sqrtf(n2.x + n2.z), sqrtf(n2.x + n2.y)),
+                               d->radius);
+  float pad = box_margin(d->radius, vec_max_abs(d->center) + d->radius);
+  return box_around(d->center, half, pad);
+}
+
+Disc disc_example(vec3s at, float size, vec3s axis)
+{
+  return disc_make(at, axis, size);
+}
+
+bool disc_surface(const Disc *d, long double u, long double v, SurfacePoint *sp)
+{
+  const long double pi = 3.141592653589793238462643383279502884L;
+  long double c[3], t1[3], t2[3];
+  surface_ld(d->center, c);
+  surface_ld(d->normal, sp->n);
+  surface_normalize(sp->n);
+  surface_basis(sp->n, t1, t2);
+  long double r = (long double)d->radius * u, ca = cosl(2 * pi * v), sa = sinl(2 * pi * v);
+  for (int a = 0; a < 3; a++)
+    sp->p[a] = c[a] + r * (ca * t1[a] + sa * t2[a]);
+  return fabsl(u) <= 1;
+}

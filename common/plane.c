@@ -46,3 +46,32 @@ void plane_hit_fill(const Plane *pl, Ray r, float t, Hit *hit)
   hit->n = hit->backface ? glms_vec3_negate(pl->normal) : pl->normal;
   /* END SOLUTION */
 }
+
+Box plane_bounds(const Plane *pl)
+{
+  Box b = {vec_make(-INFINITY, -INFINITY, -INFINITY), vec_make(INFINITY, INFINITY, INFINITY)};
+  if (pl->axis >= 0) {
+    float at = pl->point.raw[pl->axis], pad = box_margin(0.0f, fabsf(at));
+    b.min = vec_with(b.min, pl->axis, at - pad);
+    b.max = vec_with(b.max, pl->axis, at + pad);
+  }
+  return b;
+}
+
+Plane plane_example(vec3s at, float size, vec3s axis)
+{
+  (void)size;
+  return plane_make(at, axis);
+}
+
+bool plane_surface(const Plane *pl, long double u, long double v, SurfacePoint *sp)
+{
+  long double q[3], t1[3], t2[3];
+  surface_ld(pl->point, q);
+  surface_ld(pl->normal, sp->n);
+  surface_normalize(sp->n);
+  surface_basis(sp->n, t1, t2);
+  for (int a = 0; a < 3; a++)
+    sp->p[a] = q[a] + (u - 0.5L) * t1[a] + (v - 0.5L) * t2[a];
+  return true;
+}

@@ -48,3 +48,40 @@ vec3s quad_point(const Quad *q, float a, float b)
   return glms_vec3_add(q->corner, glms_vec3_add(glms_vec3_scale(q->edge1, a),
                                                 glms_vec3_scale(q->edge2, b)));
 }
+
+Box quad_bounds(const Quad *q)
+{
+  vec3s c[4] = {q->corner, glms_vec3_add(q->corner, q->edge1), glms_vec3_add(q->corner, q->edge2),
+                quad_point(q, 1.0f, 1.0f)};
+  Box b = {c[0], c[0]};
+  for (int k = 1; k < 4; k++)
+    b = box_union(b, (Box){c[k], c[k]});
+  float size = vec_max_abs(q->edge1) + vec_max_abs(q->edge2);
+  float pad = box_margin(size, vec_fmax(vec_max_abs(b.min), vec_max_abs(b.max)));
+  return (Box){glms_vec3_subs(b.min, pad), glms_vec3_adds(b.max, pad)};
+}
+
+Quad quad_example(vec3s at, float size, vec3s axis)
+{
+  vec3s t1, t2;
+  surface_frame(axis, &t1, &t2);
+  /* edge2 at 80 degrees from edge1: cos 80 = 0.173648, sin 80 = 0.984808 */
+  vec3s e1 = glms_vec3_scale(t1, size);
+  vec3s e2 = glms_vec3_scale(glms_vec3_add(glms_vec3_scale(t1, 0.173648f),
+                                           glms_vec3_scale(t2, 0.984808f)), 0.75f * size);
+  vec3s corner = glms_vec3_sub(at, glms_vec3_scale(glms_vec3_add(e1, e2), 0.5f));
+  return quad_make(corner, e1, e2);
+}
+
+bool quad_surface(const Quad *q, long double u, long double v, SurfacePoint *sp)
+{
+  long double c[3], e1[3], e2[3];
+  surface_ld(q->corner, c);
+  surface_ld(q->edge1, e1);
+  surface_ld(q->edge2, e2);
+  surface_cross(e1, e2, sp->n);
+  surface_normalize(sp->n);
+  for (int a = 0; a < 3; a++)
+    sp->p[a] = c[a] + u * e1[a] + v * e2[a];
+  return u >= 0 && u <= 1 && v >= 0 && v <= 1;
+}

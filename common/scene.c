@@ -189,37 +189,53 @@ bool scene_prepare(Scene *scene, unsigned features)
   return true;
 }
 
+/* The dispatch to each shape's functions: a switch with a case per line of
+ * SHAPE_REGISTRY (common/shapes.h), e.g. for the disc
+ *   case SHAPE_DISC: return disc_hit_t(inst->disc, r, tmax);
+ * A switch, not a table of function pointers: the compiler inlines each
+ * shape's test into the queries' loops. */
 float scene_instance_hit_t(const Instance *inst, Ray r, float tmax)
 {
+#define HIT_T_(NAME, name, Type, STORE, DOC)                                           \
+  case SHAPE_##NAME: return name##_hit_t(SHAPE_OF(inst, name, STORE), r, tmax);
   switch (inst->shape) {
-  case SHAPE_SPHERE: return sphere_hit_t(&inst->sphere, r, tmax);
-  case SHAPE_PLANE: return plane_hit_t(inst->plane, r, tmax);
-  case SHAPE_QUAD: return quad_hit_t(inst->quad, r, tmax);
-  case SHAPE_DISC: return disc_hit_t(inst->disc, r, tmax);
+    SHAPE_REGISTRY(HIT_T_)
+  case SHAPE_COUNT: break;
   }
+#undef HIT_T_
   return INFINITY;
 }
 
 static void instance_hit_fill(const Instance *inst, Ray r, float t, Hit *hit)
 {
+#define HIT_FILL_(NAME, name, Type, STORE, DOC)                                        \
+  case SHAPE_##NAME: name##_hit_fill(SHAPE_OF(inst, name, STORE), r, t, hit); break;
   switch (inst->shape) {
-  case SHAPE_SPHERE: sphere_hit_fill(&inst->sphere, r, t, hit); break;
-  case SHAPE_PLANE: plane_hit_fill(inst->plane, r, t, hit); break;
-  case SHAPE_QUAD: quad_hit_fill(inst->quad, r, t, hit); break;
-  case SHAPE_DISC: disc_hit_fill(inst->disc, r, t, hit); break;
+    SHAPE_REGISTRY(HIT_FILL_)
+  case SHAPE_COUNT: break;
   }
+#undef HIT_FILL_
   hit->inst = inst;
+}
+
+Box scene_instance_bounds(const Instance *inst)
+{
+#define BOUNDS_(NAME, name, Type, STORE, DOC)                                          \
+  case SHAPE_##NAME: return name##_bounds(SHAPE_OF(inst, name, STORE));
+  switch (inst->shape) {
+    SHAPE_REGISTRY(BOUNDS_)
+  case SHAPE_COUNT: break;
+  }
+#undef BOUNDS_
+  return (Box){vec_make(-INFINITY, -INFINITY, -INFINITY), vec_make(INFINITY, INFINITY, INFINITY)};
 }
 
 const char *scene_shape_name(ShapeType shape)
 {
-  switch (shape) {
-  case SHAPE_SPHERE: return "sphere";
-  case SHAPE_PLANE: return "plane";
-  case SHAPE_QUAD: return "quad";
-  case SHAPE_DISC: return "disc";
-  }
-  return "?";
+#define NAME_(NAME, name, Type, STORE, DOC) [SHAPE_##NAME] = #name,
+  static const char *const names[SHAPE_COUNT] = {SHAPE_REGISTRY(NAME_)};
+#undef NAME_
+  return (unsigned)shape < SHAPE_COUNT ? names[shape] : "?";
 }
 
 bool scene_intersect(const Scene *scene, Ray r, float tmax, Hit *hit)

@@ -7,32 +7,41 @@
 
 #include <stdbool.h>
 #include "camera.h"
-#include "disc.h"
 #include "light.h"
 #include "material.h"
-#include "plane.h"
-#include "quad.h"
-#include "sphere.h"
+#include "shapes.h"
 
-/* The kinds of shape an instance may be. Each has a case in scene.c's
- * switches (scene_instance_hit_t, its hit_fill, scene_shape_name), which
- * -Wswitch checks; docs/extending.md lists what a new one takes. */
-typedef enum ShapeType { SHAPE_SPHERE, SHAPE_PLANE, SHAPE_QUAD, SHAPE_DISC } ShapeType;
+/* The kinds of shape an instance may be, one per line of SHAPE_REGISTRY
+ * (common/shapes.h): SHAPE_SPHERE, SHAPE_PLANE, SHAPE_QUAD, SHAPE_DISC, ...
+ * docs/extending.md lists what a new one takes. */
+#define SHAPE_ENUM_(NAME, name, Type, STORE, DOC) SHAPE_##NAME,
+typedef enum ShapeType { SHAPE_REGISTRY(SHAPE_ENUM_) SHAPE_COUNT } ShapeType;
+#undef SHAPE_ENUM_
 
-/* A shape paired with a material or a light. A sphere is kept in place; a
- * larger shape where the scene keeps it (scene_keep), so that every instance
- * stays as small as a sphere's. */
+/* A shape paired with a material or a light. A small shape is kept in place
+ * (the sphere: `Sphere sphere`); a larger one where the scene keeps it
+ * (`const Plane *plane`: the scene's copy, scene_keep; a quad's is its area
+ * light's, Scene.lights[light].quad), so that every instance stays as small
+ * as a sphere's. The member is named as the shape (SHAPE_REGISTRY's STORE column). */
+#define SHAPE_MEMBER_(NAME, name, Type, STORE, DOC) SHAPE_MEMBER_##STORE(Type, name)
 typedef struct Instance {
   ShapeType shape;
   int material;         /* index into Scene.materials, or -1 for a light's shape */
   int light;            /* index into Scene.lights, or -1 for a lit object */
   union {
-    Sphere sphere;      /* SHAPE_SPHERE */
-    const Plane *plane; /* SHAPE_PLANE: the scene's copy (scene_keep) */
-    const Quad *quad;   /* SHAPE_QUAD: its area light's, Scene.lights[light].quad */
-    const Disc *disc;   /* SHAPE_DISC: the scene's copy (scene_keep) */
+    SHAPE_REGISTRY(SHAPE_MEMBER_)
   };
 } Instance;
+#undef SHAPE_MEMBER_
+
+/* A shape kept in place fits where a sphere does. */
+#define SHAPE_SMALL_(NAME, name, Type, STORE, DOC)                                    \
+  _Static_assert(SHAPE_FITS_##STORE(Type), #name " is kept in place (INPLACE in "     \
+                 "common/shapes.h): at most 16 bytes, else KEPT");
+#define SHAPE_FITS_INPLACE(Type) sizeof(Type) <= 16
+#define SHAPE_FITS_KEPT(Type) 1
+SHAPE_REGISTRY(SHAPE_SMALL_)
+#undef SHAPE_SMALL_
 
 /* What a step knows how to render; the rest of a scene is ignored (and said). */
 enum SceneFeature {
@@ -115,6 +124,10 @@ const Plane *scene_add_plane(Scene *scene, const Plane *plane);
  * memory (one line printed). */
 const void *scene_keep(Scene *scene, const void *shape, size_t size);
 
+/* The box of an instance's shape (sphere_bounds, plane_bounds, ...):
+ * infinite along the axes an unbounded shape extends in (box_is_bounded). */
+Box scene_instance_bounds(const Instance *inst);
+
 /* The shape's name, as the statement that makes it is written ("sphere");
  * a quad is an area light's. */
 const char *scene_shape_name(ShapeType shape);
@@ -128,7 +141,8 @@ const char *scene_shape_name(ShapeType shape);
 bool scene_prepare(Scene *scene, unsigned features);
 
 /* Distance to one instance along the ray with t in (0, tmax), INFINITY when
- * missed: the student's sphere_hit_t, plane_hit_t or quad_hit_t. */
+ * missed: its shape's name_hit_t (the student's sphere_hit_t, plane_hit_t;
+ * the given quad_hit_t, disc_hit_t, ...). */
 float scene_instance_hit_t(const Instance *inst, Ray r, float tmax);
 
 /* Closest hit with t in (0, tmax) among all instances (lit shapes and lights'

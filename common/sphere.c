@@ -54,16 +54,20 @@ float sphere_hit_t(const Sphere *s, Ray r, float tmax)
 void sphere_hit_fill(const Sphere *s, Ray r, float t, Hit *hit)
 {
   /* BEGIN SOLUTION step 02 */
-  /* Re-project o + t d onto the sphere: the error left is a few ulps of
-   * |c| + r whatever t was (docs/accuracy.md). */
-  vec3s rel = glms_vec3_sub(ray_at(r, t), s->center);
+  /* The hit relative to the centre, formed as (o - c) + t d: its error is a
+   * few ulps of |o - c| and t, however far the sphere is from the origin
+   * ((o + t d) - c would carry the rounding of o + t d, ulps of |c|: 10 bits
+   * of the normal at |c| = 1000 r; docs/02-intersection.md, "The math"). */
+  vec3s rel = glms_vec3_add(glms_vec3_sub(r.o, s->center), glms_vec3_scale(r.d, t));
   float len = glms_vec3_norm(rel);
   /* A sphere smaller than the spacing of floats at its position can round
-   * o + t d onto its centre: take the point facing the ray. */
+   * the hit onto its centre: take the point facing the ray. */
   if (!(len > 0.0f)) {
     rel = glms_vec3_negate(r.d);
     len = 1.0f;
   }
+  /* Scaled to the radius: p re-projected onto the sphere, its error a few
+   * ulps of |c| + r whatever t was (docs/accuracy.md). */
   rel = glms_vec3_scale(rel, s->radius / len);
   vec3s n_out = glms_vec3_scale(rel, 1.0f / s->radius);
   hit->t = t;
@@ -72,4 +76,29 @@ void sphere_hit_fill(const Sphere *s, Ray r, float t, Hit *hit)
   hit->n = hit->backface ? glms_vec3_negate(n_out) : n_out;
   hit->p_err = RAY_POINT_ERR * (vec_max_abs(s->center) + s->radius);
   /* END SOLUTION */
+}
+
+Box sphere_bounds(const Sphere *s)
+{
+  float r = s->radius, pad = box_margin(r, vec_max_abs(s->center) + r);
+  return box_around(s->center, vec_make(r, r, r), pad);
+}
+
+Sphere sphere_example(vec3s at, float size, vec3s axis)
+{
+  (void)axis;
+  return (Sphere){.center = at, .radius = size};
+}
+
+bool sphere_surface(const Sphere *s, long double u, long double v, SurfacePoint *sp)
+{
+  const long double pi = 3.141592653589793238462643383279502884L;
+  long double th = pi * v, ph = 2 * pi * u, c[3];
+  long double n[3] = {sinl(th) * cosl(ph), sinl(th) * sinl(ph), cosl(th)};
+  surface_ld(s->center, c);
+  for (int a = 0; a < 3; a++) {
+    sp->n[a] = n[a];
+    sp->p[a] = c[a] + (long double)s->radius * n[a];
+  }
+  return true;
 }

@@ -389,7 +389,7 @@ static int walk(Check *c, const Bvh *bvh, const Ball *balls, int node, int depth
       CHECK_REQUIRE(c, id >= 0 && id < bvh->n_items && !covered[id],
                     "leaf %d: ball %d is in two leaves (or out of range)", node, id);
       covered[id] = 1;
-      Box box = ball_box(balls[id]);
+      Box4 box = ball_box(balls[id]);
       for (int a = 0; a < 3; a++)
         CHECK_REQUIRE(c, nd->lo[a] <= box.lo[a] && box.hi[a] <= nd->hi[a],
                       "leaf %d, axis %d: [%.9g, %.9g] does not hold ball %d's cube "

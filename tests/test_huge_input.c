@@ -4,6 +4,7 @@
  * large to read. */
 #define _DEFAULT_SOURCE /* realpath, truncate */
 #include "bad_run.h"
+#include "statements.h"
 
 #define DOC "docs/reliability.md, \"The bad-input suite\""
 
@@ -18,8 +19,6 @@
 #ifndef REL_ASAN
 #define REL_ASAN 0
 #endif
-#define STATEMENTS "(film, camera, ambient, background, material, plane, sphere, " \
-                   "disc, light, samples, light_samples)"
 
 /* Write `head`, then `n` copies of `fill`, then `tail` to WORK/name. */
 static void generate(const char *name, const char *head, const char *fill, long n,

@@ -2,9 +2,10 @@
  * read as the program reads it (parser_load_text: with the speed pack, a
  * text this large is parsed in pieces at once and merged) and in one pass
  * (parser_load_whole): both must give the same scene, and hold every line
- * the test wrote. The statements and light types are taken from the parser's
- * own messages, so a statement added to the parser and not to this test
- * fails here. docs/scene-format.md, "Statements"; docs/extending.md. */
+ * the test wrote. Its lines are the examples of the parser's statement table
+ * (parser_statement_example) and one of each light type (taken from the
+ * parser's own message: a light type added to the parser and not to this
+ * test fails here). docs/scene-format.md, "Statements"; docs/extending.md. */
 #include "parse_capture.h"
 #include "check.h"
 
@@ -12,53 +13,117 @@
 #include <stdlib.h>
 
 #include "app/parser.h"
+#include "app/parser_state.h"
 #include "reader/pieces.h"
 #include "same_instance.h"
 
 #define DOC "docs/extending.md, \"Adding a shape\""
 
-/* One block of lines, written BLOCKS times (k: the block's number, for
- * values that differ from block to block). Shapes name the material of the
- * block after theirs, defined later: references resolved after the merge. */
+/* An example line of the statement table (parser_statement_example) with
+ * its material `m` renamed: m<k> where the material statement defines it,
+ * m<k + 1> where a shape names it (a material defined later: references
+ * resolved after the merge). Returns its length, as snprintf. */
+static int example_line(char *out, size_t size, const char *example, int k)
+{
+  bool defines = strncmp(example, "material ", 9) == 0;
+  char line[512];
+  cr_assert(strlen(example) < sizeof line - 32, "parser_statement_example: expected an "
+            "example line under %zu bytes, got %zu: %s", sizeof line - 32, strlen(example),
+            example);
+  int n = 0;
+  for (const char *w = example; *w;) {
+    size_t len = strcspn(w, " ");
+    bool named = len == 1 && *w == 'm' && n >= 9 && !strncmp(line + n - 9, "material ", 9);
+    n += named ? snprintf(line + n, sizeof line - (size_t)n, "m%d", defines ? k : k + 1)
+               : snprintf(line + n, sizeof line - (size_t)n, "%.*s", (int)len, w);
+    w += len;
+    if (*w == ' ')
+      line[n++] = *w++;
+  }
+  line[n] = '\0';
+  return snprintf(out, size, "%s\n", line);
+}
+
+/* One block of lines, written BLOCKS times (k: the block's number): the
+ * example of every statement of the table that a file may repeat, each
+ * light type, a comment and a blank line. With out NULL, only its length. */
 static int block(char *out, size_t size, int k)
 {
+  size_t n = 0;
+  for (int s = 0; s < parser_statement_count(); s++)
+    if (!parser_statement_once(s))
+      n += (size_t)example_line(out ? out + n : NULL, out ? size - n : 0,
+                                parser_statement_example(s), k);
   float x = 0.001f * (float)k;
-  return snprintf(out, size,
-                  "material m%d diffuse 0.5 0.25 0.125 specular 0.1 0.2 0.3 shininess %d\n"
-                  "sphere center %g 1 -2 radius 0.5 material m%d\n"
-                  "plane point 0 %g 0 normal 0 1 0.5 material m%d\n"
-                  "disc center %g 2 -3 normal 1 1 0 radius 0.25 material m%d\n"
-                  "light point position %g 5 1 power 10 20 30 radius 0.5\n"
-                  "light directional direction -1 -2 -%g irradiance 0.1 0.2 0.3\n"
-                  "light area corner %g 4 -1 edge1 1 0 0 edge2 0 0 1 power 5 5 5\n"
-                  "# a comment line, then a blank one\n\n",
-                  k, k % 100, x, k + 1, -x, k + 1, x, k + 1, x, 1.0f + x, x);
+  n += (size_t)snprintf(out ? out + n : NULL, out ? size - n : 0,
+                        "light directional direction -1 -2 -%g irradiance 0.1 0.2 0.3\n"
+                        "light area corner %g 4 -1 edge1 1 0 0 edge2 0 0 1 power 5 5 5\n"
+                        "# a comment line, then a blank one\n\n",
+                        1.0f + x, x);
+  return (int)n;
 }
-enum { SHAPES_PER_BLOCK = 3, LIGHTS_PER_BLOCK = 3 };
 
-/* The once-statements, written once, in the middle of the text. */
-static const char ONCE[] = "film 320 240\n"
-                           "camera eye 0 2 8 center 0 0.5 0 up 0 1 0 fov 50 focal 2\n"
-                           "ambient 0.1 0.2 0.3\n"
-                           "background 0.3 0.2 0.1\n"
-                           "samples 9\n"
-                           "light_samples 4\n";
+/* The once-statements' examples, written once, in the middle of the text.
+ * With out NULL, only their length. */
+static size_t once_lines(char *out, size_t size)
+{
+  size_t n = 0;
+  for (int s = 0; s < parser_statement_count(); s++)
+    if (parser_statement_once(s))
+      n += (size_t)snprintf(out ? out + n : NULL, out ? size - n : 0, "%s\n",
+                            parser_statement_example(s));
+  return n;
+}
 
-/* The text: BLOCKS blocks, ONCE after the first half, then the last
- * block's material (which the last block's shapes name). */
+/* The text: BLOCKS blocks, the once-statements after the first half, then
+ * the last block's material (which the last block's shapes name). Its size
+ * is measured first: a statement added to the table lengthens every block. */
 static char *scene_text(int blocks, size_t *len)
 {
-  size_t cap = (size_t)blocks * 600 + sizeof ONCE + 128, n = 0;
-  char *text = malloc(cap);
+  size_t cap = once_lines(NULL, 0) + 64;
+  for (int k = 0; k < blocks; k++)
+    cap += (size_t)block(NULL, 0, k);
+  char *text = malloc(cap), *end = text;
   cr_assert(text, "out of memory");
   for (int k = 0; k < blocks; k++) {
     if (k == blocks / 2)
-      n += (size_t)snprintf(text + n, cap - n, "%s", ONCE);
-    n += (size_t)block(text + n, cap - n, k);
+      end += once_lines(end, cap - (size_t)(end - text));
+    end += block(end, cap - (size_t)(end - text), k);
   }
-  n += (size_t)snprintf(text + n, cap - n, "material m%d diffuse 1 1 1\n", blocks);
-  *len = n;
+  end += snprintf(end, cap - (size_t)(end - text), "material m%d diffuse 1 1 1\n", blocks);
+  *len = (size_t)(end - text);
   return text;
+}
+
+/* What one block holds, parsed alone: its materials, lights, and shapes of
+ * each kind. */
+typedef struct Counts {
+  int materials, lights, shapes, kind[SHAPE_COUNT];
+} Counts;
+
+static Counts counts_of(const Scene *s)
+{
+  Counts c = {s->n_materials, s->n_lights, s->n_shapes, {0}};
+  for (int k = 0; k < s->n_shapes; k++)
+    c.kind[s->instances[k].shape]++;
+  return c;
+}
+
+static Counts one_block(void)
+{
+  char text[4096];
+  int n = block(text, sizeof text, 0);
+  snprintf(text + n, sizeof text - (size_t)n, "material m1 diffuse 1 1 1\n");
+  Scene s;
+  scene_init(&s);
+  cr_assert(parser_load_whole("block.scene", text, strlen(text), &s),
+            "parser_load_whole: one block of the large text must parse (its message is "
+            "above): the statement table's example lines (parser_statement_example)\n%s",
+            text);
+  Counts c = counts_of(&s);
+  scene_free(&s);
+  c.materials--; /* m1, defined for the block's shapes */
+  return c;
 }
 
 /* The words an unknown word's message lists (`text` is one such word on a
@@ -82,8 +147,7 @@ static int listed_words(const char *text, const char *after, char words[][24], i
 
 Test(large_scene, every_statement_arrives_through_the_large_text_path)
 {
-  char statements[32][24], types[16][24];
-  int n_statements = listed_words("teapot\n", "a statement (", statements, 32);
+  char types[16][24];
   int n_types = listed_words("light teapot\n", "a light type (", types, 16);
   int blocks = 16000;
   size_t len;
@@ -91,14 +155,6 @@ Test(large_scene, every_statement_arrives_through_the_large_text_path)
   Check c = CHECK("parser_load_text", DOC);
   CHECK_REQUIRE(&c, len > ((size_t)4 << 20), "the test's scene text: expected more than "
                 "4 MB (the large-text path), got %zu bytes", len);
-  for (int k = 0; k < n_statements; k++) {
-    char line[64];
-    snprintf(line, sizeof line, "\n%.23s ", statements[k]);
-    CHECK_THAT(&c, strstr(text, line) || !strncmp(text, line + 1, strlen(line) - 1),
-               "the parser reads a '%s' statement, which this test's scene text does not "
-               "use: add a line of it to block() or ONCE in tests/test_large_scene.c",
-               statements[k]);
-  }
   for (int k = 0; k < n_types; k++) {
     char line[64];
     snprintf(line, sizeof line, "\nlight %.23s ", types[k]);
@@ -121,18 +177,13 @@ Test(large_scene, every_statement_arrives_through_the_large_text_path)
             "text failed (fast/reader/pieces.c: its merge refused a line)");
 
   /* Every line arrived (counted from what the test wrote). */
-  CHECK_INT(&c, blocks + 1, fast.n_materials, "materials of the large text");
-  CHECK_INT(&c, blocks * LIGHTS_PER_BLOCK, fast.n_lights, "lights of the large text");
-  CHECK_INT(&c, blocks * SHAPES_PER_BLOCK, fast.n_shapes, "shapes of the large text");
-  int spheres = 0, planes = 0, discs = 0;
-  for (int k = 0; k < fast.n_shapes; k++) {
-    spheres += fast.instances[k].shape == SHAPE_SPHERE;
-    planes += fast.instances[k].shape == SHAPE_PLANE;
-    discs += fast.instances[k].shape == SHAPE_DISC;
-  }
-  CHECK_INT(&c, blocks, spheres, "spheres of the large text");
-  CHECK_INT(&c, blocks, planes, "planes of the large text");
-  CHECK_INT(&c, blocks, discs, "discs of the large text");
+  Counts want = one_block(), got = counts_of(&fast);
+  CHECK_INT(&c, blocks * want.materials + 1, got.materials, "materials of the large text");
+  CHECK_INT(&c, blocks * want.lights, got.lights, "lights of the large text");
+  CHECK_INT(&c, blocks * want.shapes, got.shapes, "shapes of the large text");
+  for (int k = 0; k < SHAPE_COUNT; k++)
+    CHECK_INT(&c, blocks * want.kind[k], got.kind[k], "%s instances of the large text",
+              scene_shape_name((ShapeType)k));
   CHECK_INT(&c, 320, fast.width, "film 320 240, written halfway: width");
   CHECK_INT(&c, 9, fast.samples, "samples 9, written halfway");
   CHECK_INT(&c, 4, fast.light_samples, "light_samples 4, written halfway");

@@ -4,6 +4,7 @@
  * 1). docs/scene-format.md. */
 #include "capture.h"
 #include "check.h"
+#include "statements.h"
 
 #include <stdlib.h>
 #include <unistd.h>
@@ -204,8 +205,6 @@ static void expect_errors(const Bad *bad, size_t n, const char *doc)
     expect_errors(bad_, sizeof bad_ / sizeof bad_[0], doc);                      \
   } while (0)
 
-#define STATEMENTS "(film, camera, ambient, background, material, plane, sphere, " \
-                   "disc, light, samples, light_samples)"
 
 Test(parser, unknown_words_suggest_the_nearest)
 {
@@ -223,7 +222,7 @@ Test(parser, unknown_words_suggest_the_nearest)
     {"camera eye 0 0 5 lookat 0 0 0\n",
      "t.scene:1:18: expected a camera keyword (eye, center, up, fov, focal), found 'lookat'", 0},
     {"light pointt position 0 0 0 power 1 1 1\n",
-     "t.scene:1:7: expected a light type (point, directional, area), found 'pointt'; did you "
+     "t.scene:1:7: expected a light type " LIGHT_TYPES ", found 'pointt'; did you "
      "mean 'point'?", 0},
     {"light point position 0 0 0 powr 1 1 1\n",
      "t.scene:1:28: expected a point light keyword (position, power, radius), found 'powr'; "
@@ -242,7 +241,7 @@ Test(parser, missing_and_extra_values)
     {"film 800\n", "t.scene:1:9: expected the film height, found end of line", 0},
     {"ambient 0.1 0.1\n",
      "t.scene:1:16: expected 3 numbers >= 0 after 'ambient', found end of line", 0},
-    {"light\n", "t.scene:1:6: expected a light type (point, directional, area), found end of line", 0},
+    {"light\n", "t.scene:1:6: expected a light type " LIGHT_TYPES ", found end of line", 0},
     {"material\n", "t.scene:1:9: expected a material name, found end of line", 0},
     {"sphere center 0 0 0 1 radius 1 material m\n",
      "t.scene:1:21: expected a sphere keyword, found an extra value '1'", 0},

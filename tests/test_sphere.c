@@ -183,3 +183,66 @@ Test(sphere, p_err_bounds_the_hit_points_error)
   }
   CHECK_DONE(&f);
 }
+
+Test(sphere, normal_of_a_sphere_far_from_the_origin)
+{
+  /* Step 05 shades spheres 1000 radii from the origin seen from a few radii
+   * (stress test 4): the highlight there needs the normal to the last bits,
+   * and p's coordinates are rounded to ulps of |c|, 1000 times those of the
+   * radius. The normal must be the direction of (o - c) + t d (the point of
+   * the ray at the given t, seen from the centre; long double from the float
+   * inputs) within 16 x 2^-24 (1 + |o - c| / r): its error may grow with the
+   * ray's distance from the sphere, not with the sphere's from the origin. */
+  Check f = CHECK("sphere_hit_fill", DOC);
+  const float away[] = {1.0f, 1e3f, 1e5f};
+  double worst = 0.0;
+  for (int k = 0; k < 3; k++) {
+    for (int q = 0; q < 64; q++) {
+      float a = 0.37f * (float)q + 0.2f * (float)k, b = 0.23f * (float)q;
+      vec3s u = glms_vec3_normalize(vec_make(cosf(a) * cosf(b), sinf(b), sinf(a) * cosf(b)));
+      vec3s side = glms_vec3_normalize(glms_vec3_cross(u, vec_make(0.3f, 0.9f, -0.2f)));
+      float radius = 0.25f * (float)(1 + q % 5);
+      Sphere s = {.center = glms_vec3_scale(vec_make(0.6f, -0.48f, 0.64f), away[k] * radius),
+                  .radius = radius};
+      float dist = radius * (1.5f + 0.5f * (float)(q % 9));
+      vec3s o = glms_vec3_add(s.center, glms_vec3_scale(u, dist));
+      vec3s aimed = glms_vec3_add(s.center, glms_vec3_scale(side, radius * 0.1f * (float)(q % 9)));
+      Ray r = {.o = o, .d = glms_vec3_normalize(glms_vec3_sub(aimed, o))};
+      /* The nearest root in long double, rounded to float: t is not
+       * sphere_hit_t's here. */
+      long double fo[3], d[3], fb = 0, ff = 0, dd = 0;
+      for (int i = 0; i < 3; i++) {
+        fo[i] = (long double)r.o.raw[i] - s.center.raw[i];
+        d[i] = r.d.raw[i];
+        fb += fo[i] * d[i];
+        ff += fo[i] * fo[i];
+        dd += d[i] * d[i];
+      }
+      long double disc = fb * fb - dd * (ff - (long double)radius * radius);
+      cr_assert(disc > 0.0L, "the test's own ray %d must hit its sphere", q);
+      float t = (float)((-fb - sqrtl(disc)) / dd);
+      long double rel[3], len = 0;
+      for (int i = 0; i < 3; i++) {
+        rel[i] = fo[i] + (long double)t * d[i];
+        len += rel[i] * rel[i];
+      }
+      len = sqrtl(len);
+      Hit h;
+      sphere_hit_fill(&s, r, t, &h);
+      double err = 0.0;
+      for (int i = 0; i < 3; i++)
+        err = fmax(err, (double)fabsl((long double)h.n.raw[i] - rel[i] / len));
+      double units = err / 0x1p-24, bound = 16.0 * (1.0 + (double)(sqrtl(ff) / radius));
+      worst = fmax(worst, units / bound);
+      CHECK_THAT(&f, units <= bound, "sphere of radius %g, %g radii from the origin, ray %d "
+                 "from %.3g radii away: the normal is %.3g x 2^-24 off the direction of "
+                 "(o - c) + t d (at most %.3g asked): form p - c as (o - c) + t d; p's "
+                 "coordinates are rounded to ulps of |c|, %g times those of r\n  expected "
+                 "n = (%.9Lg, %.9Lg, %.9Lg)\n  got      n = (%.9g, %.9g, %.9g)",
+                 (double)radius, (double)away[k], q, (double)(sqrtl(ff) / radius), units, bound,
+                 (double)away[k], rel[0] / len, rel[1] / len, rel[2] / len, h.n.x, h.n.y, h.n.z);
+    }
+  }
+  CHECK_DONE(&f);
+  cr_log_info("sphere_hit_fill: worst normal error %.3g of the bound", worst);
+}

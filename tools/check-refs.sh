@@ -1,14 +1,18 @@
 #!/usr/bin/env bash
 # Every file a source, test, tool or doc cites exists, and every doc section
-# cited as `docs/NN-name.md, "Section"` (comments, TODO lines, tests/check.h's
-# CHECK(fn, doc) strings) is a heading of that doc: the heading itself, or a
-# heading that starts with it ("What you write" names "## What you write (the
-# solution regions)"). Usage: tools/check-refs.sh (make check-refs); exit 1,
-# with one line per broken reference, when some are.
-# Scanned: the tracked C sources, headers, scripts, makefiles and Markdown
-# files: every path under docs/, common/, steps/, tests/, tools/, bench/,
-# scenes/, images/, mk/ they mention, the docs' relative links, and section
-# citations.
+# cited as `docs/NN-name.md, "Section"` or `README.md, "Section"` (comments,
+# TODO lines, tests/check.h's CHECK(fn, doc) strings, messages, the reference
+# traces' "doc" fields, the expected error messages) is a heading of that doc:
+# the heading itself, or a heading that starts with it ("What you write" names
+# "## What you write (the solution regions)"). `README, "Section"` and
+# `README "Section"` are read as README.md's. Usage: tools/check-refs.sh (make
+# check-refs, part of make check-derived); exit 1, with one line per broken
+# reference, when some are.
+# Scanned: the tracked C sources, headers, scripts, makefiles, Markdown files,
+# reference traces (tests/traces/), expected messages (tests/bad/), mutants
+# (tools/mutants/) and the report's page: every path under docs/, common/,
+# steps/, tests/, tools/, bench/, scenes/, images/, mk/ they mention, the
+# docs' relative links, and section citations.
 set -uo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
 cd "$top"
@@ -65,12 +69,13 @@ md && !fence {
 }
 END {
   rest = joined; off = 0
-  while (match(rest, /[A-Za-z0-9_.\/-]+\.md,[ \t]+"[^"]+"/)) {
+  while (match(rest, /[A-Za-z0-9_.\/-]+\.md,[ \t]+"[^"]+"|README,?[ \t]+"[^"]+"/)) {
     cite = substr(rest, RSTART, RLENGTH); pos = off + RSTART
     off += RSTART + RLENGTH - 1; rest = substr(rest, RSTART + RLENGTH)
-    doc = cite; sub(/,.*/, "", doc)
+    doc = cite; sub(/,?[ \t]+".*/, "", doc)
+    if (doc == "README") doc = "README.md"
     sec = cite; sub(/^[^"]*"/, "", sec); sub(/"$/, "", sec); gsub(/[ \t]+/, " ", sec)
-    if (doc ~ /NN|%|\*|\$/ || doc == "DOC.md") continue
+    if (doc ~ /NN|%|\*|\$/ || doc == "DOC.md" || sec == "Section") continue
     for (k = n; k > 1 && at[k] > pos; k--) ;
     printf "%s\t%d\tsection\t%s\t%s\n", FILENAME, lineno[k], doc, sec
   }
@@ -84,7 +89,9 @@ bad=0
 report() { echo "check-refs: $*"; bad=$((bad + 1)); }
 while IFS= read -r f; do
   [ -f "$f" ] && awk "$cites" "$f"
-done < <(listed '*.c' '*.h' '*.sh' '*.awk' '*.mk' 'Makefile' '.ci/run' '*.md' | sort -u) > "${TMPDIR:-/tmp}/cites.$$"
+done < <(listed '*.c' '*.h' '*.sh' '*.awk' '*.mk' 'Makefile' '.ci/run' '*.md' '*.json' '*.err' \
+            '*.mut' '*.html' 'tools/grade' 'tools/gradescope/run_autograder' 'Dockerfile' |
+           sort -u) > "${TMPDIR:-/tmp}/cites.$$"
 while IFS=$'\t' read -r file line kind target section; do
   case $kind in
     path) # a program is named after its source (bench/gen_spheres.c)

@@ -307,19 +307,54 @@ static bool st_light_samples(Parser *p)
   return st_count(p, ONCE_LIGHT_SAMPLES, "light_samples", &p->scene->light_samples);
 }
 
-/* The statements by their first word, in the order an unknown word's
- * message lists them (docs/scene-format.md, "Statements"); each reads the
- * rest of its line. */
+/* The statement table: the statements by their first word, in the order an
+ * unknown word's message lists them (docs/scene-format.md, "Statements");
+ * each reads the rest of its line. The example is a valid line of it (a
+ * shape's names the material `m`): tests/test_large_scene.c writes it into
+ * its scene text; `once` marks the statements a file may hold once. The
+ * lists of statements in the expected messages (the .err files of tests/bad/scenes,
+ * tests/statements.h) and the fuzzing dictionary are generated from this
+ * table by tools/statements.sh (make regen-statements). */
 static const struct Statement {
   const char *word;
   bool (*read)(Parser *p);
+  const char *example;
+  bool once;
 } STATEMENTS[] = {
-    {"film", st_film},         {"camera", st_camera},   {"ambient", st_ambient},
-    {"background", st_background}, {"material", st_material}, {"plane", st_plane},
-    {"sphere", st_sphere},     {"disc", st_disc},       {"light", st_light},
-    {"samples", st_samples},   {"light_samples", st_light_samples},
+    {"film", st_film, "film 320 240", true},
+    {"camera", st_camera, "camera eye 0 2 8 center 0 0.5 0 up 0 1 0 fov 50 focal 2", true},
+    {"ambient", st_ambient, "ambient 0.1 0.2 0.3", true},
+    {"background", st_background, "background 0.3 0.2 0.1", true},
+    {"material", st_material,
+     "material m diffuse 0.5 0.25 0.125 specular 0.1 0.2 0.3 shininess 8", false},
+    {"plane", st_plane, "plane point 0 -1 0 normal 0 1 0.5 material m", false},
+    {"sphere", st_sphere, "sphere center 0.5 1 -2 radius 0.5 material m", false},
+    {"disc", st_disc, "disc center 0.25 2 -3 normal 1 1 0 radius 0.25 material m", false},
+    {"light", st_light, "light point position 1 5 1 power 10 20 30 radius 0.5", false},
+    {"samples", st_samples, "samples 9", true},
+    {"light_samples", st_light_samples, "light_samples 4", true},
 };
 enum { STATEMENT_COUNT = sizeof STATEMENTS / sizeof *STATEMENTS };
+
+int parser_statement_count(void)
+{
+  return STATEMENT_COUNT;
+}
+
+const char *parser_statement_word(int k)
+{
+  return STATEMENTS[k].word;
+}
+
+const char *parser_statement_example(int k)
+{
+  return STATEMENTS[k].example;
+}
+
+bool parser_statement_once(int k)
+{
+  return STATEMENTS[k].once;
+}
 
 static bool statement(Parser *p)
 {

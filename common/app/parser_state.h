@@ -69,6 +69,15 @@ bool parser_pending_merge(Parser *p, const Parser *q, int first_instance);
  * it find more shapes than its room, one a line. */
 bool parser_place_shape(Parser *p, Instance *inst, const Token *name);
 
+/* The statement table (parser_state.c's STATEMENTS), in the order messages
+ * list it: k in [0, parser_statement_count()). Each statement's first word,
+ * a valid line of it (a shape's names material `m`), and whether a file may
+ * hold it once only. */
+int parser_statement_count(void);
+const char *parser_statement_word(int k);
+const char *parser_statement_example(int k);
+bool parser_statement_once(int k);
+
 /* Resolve p->pending; false (printed) at the first undefined name. */
 bool parser_resolve(Parser *p);
 

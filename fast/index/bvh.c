@@ -125,10 +125,10 @@ static BvhNode cluster_node(SahBuild *b, Balls balls, int first, int count, int 
 {
   if (count <= b->leaf_max) { /* the ids in increasing order */
     sort_leaf(b->ids + first, count);
-    Box box = box_empty();
+    Box4 box = box4_empty();
     for (int k = first; k < first + count; k++) {
-      Box it = ball_box(balls_get(balls, b->ids[k]));
-      box_grow(&box, &it);
+      Box4 it = ball_box(balls_get(balls, b->ids[k]));
+      box4_grow(&box, &it);
     }
     return node_make(&box, first, count);
   }
@@ -137,19 +137,19 @@ static BvhNode cluster_node(SahBuild *b, Balls balls, int first, int count, int 
       cluster_node(b, balls, first, lc, block + 2),
       cluster_node(b, balls, first + lc, count - lc,
                    block + 2 * cluster_leaves(lc, b->leaf_max))};
-  Box box[2] = {node_box(&half[0]), node_box(&half[1])};
+  Box4 box[2] = {node_box(&half[0]), node_box(&half[1])};
   bool second_lower; /* then the first half takes the second slot */
   int axis = sah_apart_axis(&box[0], &box[1], &second_lower);
   b->nodes[block + second_lower] = half[0];
   b->nodes[block + !second_lower] = half[1];
-  box_grow(&box[0], &box[1]);
+  box4_grow(&box[0], &box[1]);
   return node_make(&box[0], block, -1 - axis);
 }
 
 /* What a build over weighted boxes needs (clusters, or groups of them), one
  * array each (m entries). */
 typedef struct Top {
-  Box *boxes;
+  Box4 *boxes;
   int *ids, *weight, *leaf_node, *leaf_depth, *place, *first, *count;
 } Top;
 
@@ -216,10 +216,10 @@ static void cut_clusters(const uint64_t *sorted, const MortonRuns *gr, MortonRun
 static void group_clusters(const MortonRuns *gr, const Top *t, Top *g)
 {
   for (int k = 0; k < gr->n; k++) {
-    g->boxes[k] = box_empty();
+    g->boxes[k] = box4_empty();
     g->weight[k] = 0;
     for (int j = g->first[k]; j < g->first[k] + g->count[k]; j++) {
-      box_grow(&g->boxes[k], &t->boxes[j]);
+      box4_grow(&g->boxes[k], &t->boxes[j]);
       g->weight[k] += t->weight[j];
     }
     g->ids[k] = k;

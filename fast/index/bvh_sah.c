@@ -19,7 +19,7 @@ enum {
 static const float COST_TRAV = 1.0f, COST_ITEM = 1.5f;
 
 /* Half the surface area (the factor 2 cancels in every ratio). */
-static float box_area(const Box *b)
+static float box_area(const Box4 *b)
 {
   float dx = b->hi[0] - b->lo[0], dy = b->hi[1] - b->lo[1], dz = b->hi[2] - b->lo[2];
   return dx < 0.0f ? 0.0f : dx * dy + dy * dz + dz * dx;
@@ -47,13 +47,13 @@ static int weight_of(const SahBuild *b, int k)
   return b->weight ? b->weight[k] : 1;
 }
 
-static float centre2(const Box *it, int a)
+static float centre2(const Box4 *it, int a)
 {
   return it->lo[a] + it->hi[a];
 }
 
 /* bin_of on the three axes at once (scale's 4th lane is 0: bin 0). */
-static I4 bins_of(const Box *it, const Box *cb, V4 scale)
+static I4 bins_of(const Box4 *it, const Box4 *cb, V4 scale)
 {
   V4 x = (it->lo + it->hi - cb->lo) * scale, zero = {0.0f, 0.0f, 0.0f, 0.0f};
   V4 top = {BINS - 1, BINS - 1, BINS - 1, BINS - 1};
@@ -80,24 +80,24 @@ static void consider(float cost, int a, int k, float *best, int *axis, int *spli
  * non-empty bins split the items alike, so the first of them stands for
  * all (a strictly lower cost wins), and small nodes pay for the bins they
  * use, not for 16 an axis. */
-static void sweep_bins(const SahBuild *b, int first, int count, const Box *cb, V4 scale,
+static void sweep_bins(const SahBuild *b, int first, int count, const Box4 *cb, V4 scale,
                        float area, float *best, int *axis, int *split_bin)
 {
-  Box box[3][BINS];
+  Box4 box[3][BINS];
   int n[3][BINS];
   uint32_t used[3] = {0, 0, 0};
   for (int k = first; k < first + count; k++) {
-    const Box *it = &b->items[k];
+    const Box4 *it = &b->items[k];
     I4 bin = bins_of(it, cb, scale);
     int w = weight_of(b, k);
     for (int a = 0; a < 3; a++) {
       int v = bin[a];
       if (!(used[a] >> v & 1u)) {
         used[a] |= 1u << v;
-        box[a][v] = box_empty();
+        box[a][v] = box4_empty();
         n[a][v] = 0;
       }
-      box_grow(&box[a][v], it);
+      box4_grow(&box[a][v], it);
       n[a][v] += w;
     }
   }
@@ -105,21 +105,21 @@ static void sweep_bins(const SahBuild *b, int first, int count, const Box *cb, V
     if (scale[a] == 0.0f || (used[a] & (used[a] - 1)) == 0)
       continue; /* one bin: no boundary between two non-empty ones */
     int last[BINS], right_n[BINS], groups = 0;
-    Box right[BINS];
+    Box4 right[BINS];
     for (uint32_t m = used[a]; m; m &= m - 1)
       last[groups++] = __builtin_ctz(m);
-    Box acc = box_empty();
+    Box4 acc = box4_empty();
     int acc_n = 0;
     for (int g = groups - 1; g > 0; g--) {
-      box_grow(&acc, &box[a][last[g]]);
+      box4_grow(&acc, &box[a][last[g]]);
       acc_n += n[a][last[g]];
       right[g] = acc;
       right_n[g] = acc_n;
     }
-    acc = box_empty();
+    acc = box4_empty();
     acc_n = 0;
     for (int g = 1; g < groups; g++) {
-      box_grow(&acc, &box[a][last[g - 1]]);
+      box4_grow(&acc, &box[a][last[g - 1]]);
       acc_n += n[a][last[g - 1]];
       consider(COST_TRAV + (box_area(&acc) * leaf_cost(acc_n) +
                             box_area(&right[g]) * leaf_cost(right_n[g])) / area,
@@ -130,7 +130,7 @@ static void sweep_bins(const SahBuild *b, int first, int count, const Box *cb, V
 
 /* The best binned split of items [first, first + count): its cost, axis and
  * bin boundary (items with bin < *split_bin go left). */
-static float best_split(const SahBuild *b, int first, int count, const Box *cb,
+static float best_split(const SahBuild *b, int first, int count, const Box4 *cb,
                         float area, int *axis, int *split_bin)
 {
   float best = FLT_MAX;
@@ -149,14 +149,14 @@ static float best_split(const SahBuild *b, int first, int count, const Box *cb,
  * weighted count. */
 typedef struct Halves {
   int mid, axis;
-  Box box[2], cb[2];
+  Box4 box[2], cb[2];
   int weight[2];
 } Halves;
 
 static void halves_empty(Halves *h)
 {
   for (int s = 0; s < 2; s++) {
-    h->box[s] = h->cb[s] = box_empty();
+    h->box[s] = h->cb[s] = box4_empty();
     h->weight[s] = 0;
   }
 }
@@ -164,17 +164,17 @@ static void halves_empty(Halves *h)
 /* Count item k into half s. */
 static void halves_add(Halves *h, int s, const SahBuild *b, int k)
 {
-  const Box *it = &b->items[k];
-  Box c = {it->lo + it->hi, it->lo + it->hi};
-  box_grow(&h->box[s], it);
-  box_grow(&h->cb[s], &c);
+  const Box4 *it = &b->items[k];
+  Box4 c = {it->lo + it->hi, it->lo + it->hi};
+  box4_grow(&h->box[s], it);
+  box4_grow(&h->cb[s], &c);
   h->weight[s] += weight_of(b, k);
 }
 
 /* Items i and j trade places (with their ids and weights). */
 static void swap_items(SahBuild *b, int i, int j)
 {
-  Box tmp = b->items[i];
+  Box4 tmp = b->items[i];
   int id = b->ids[i];
   b->items[i] = b->items[j];
   b->ids[i] = b->ids[j];
@@ -187,7 +187,7 @@ static void swap_items(SahBuild *b, int i, int j)
   }
 }
 
-int sah_apart_axis(const Box *a, const Box *b, bool *b_lower)
+int sah_apart_axis(const Box4 *a, const Box4 *b, bool *b_lower)
 {
   V4 apart = (b->lo + b->hi) - (a->lo + a->hi);
   int axis = 0;
@@ -200,7 +200,7 @@ int sah_apart_axis(const Box *a, const Box *b, bool *b_lower)
 
 /* Move the items of bin < split_bin on `axis` to the front, measuring the
  * two halves on the way (each item is looked at once). */
-static void split_items(SahBuild *b, int first, int count, const Box *cb, int axis,
+static void split_items(SahBuild *b, int first, int count, const Box4 *cb, int axis,
                         int split_bin, Halves *h)
 {
   float scale = (float)BINS / (cb->hi[axis] - cb->lo[axis]);
@@ -240,7 +240,7 @@ static void split_pair(SahBuild *b, int first, Halves *h)
   h->axis = axis;
 }
 
-static bool partition(SahBuild *b, int first, int count, const Box *cb, float area,
+static bool partition(SahBuild *b, int first, int count, const Box4 *cb, float area,
                       int depth, Halves *h)
 {
   if (count == 2 && b->leaf_max < 2) {
@@ -269,7 +269,7 @@ static bool partition(SahBuild *b, int first, int count, const Box *cb, float ar
 /* sah_build_node, with the items' bounds `box` and their centres' `cb`
  * (measured by the parent's split). */
 static void build_node(SahBuild *b, int node, int first, int count, int depth, int block,
-                       const Box *box, const Box *cb)
+                       const Box4 *box, const Box4 *cb)
 {
   Halves h;
   bool leaf = count <= 1 || b->one_leaf ||
@@ -308,12 +308,12 @@ static void build_node(SahBuild *b, int node, int first, int count, int depth, i
 
 void sah_build_node(SahBuild *b, int node, int first, int count, int depth, int block)
 {
-  Box box = box_empty(), cb = box_empty();
+  Box4 box = box4_empty(), cb = box4_empty();
   for (int k = first; k < first + count; k++) {
-    const Box *it = &b->items[k];
-    Box c = {it->lo + it->hi, it->lo + it->hi};
-    box_grow(&box, it);
-    box_grow(&cb, &c);
+    const Box4 *it = &b->items[k];
+    Box4 c = {it->lo + it->hi, it->lo + it->hi};
+    box4_grow(&box, it);
+    box4_grow(&cb, &c);
   }
   build_node(b, node, first, count, depth, block, &box, &cb);
 }

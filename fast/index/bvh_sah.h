@@ -13,7 +13,7 @@
  * that much in the heuristic; each leaf is then one item, whose slot
  * leaf_node[position] the caller fills (its subtree is kept elsewhere). */
 typedef struct SahBuild {
-  Box *items;
+  Box4 *items;
   int *ids;            /* moved with the items */
   int *weight;         /* NULL: 1 each */
   BvhNode *nodes;      /* a subtree of c items owns 2 c - 1 slots */
@@ -26,7 +26,7 @@ typedef struct SahBuild {
 /* The axis along which the middles of boxes a and b lie furthest apart;
  * *b_lower: b's middle is the lower along it. Two children split without
  * the heuristic go lower first by that axis (bvh.h). */
-int sah_apart_axis(const Box *a, const Box *b, bool *b_lower);
+int sah_apart_axis(const Box4 *a, const Box4 *b, bool *b_lower);
 
 /* Build node `node` over items [first, first + count) at `depth`; its
  * descendants go to the slots from `block` on (the left child's c_l items in

@@ -9,7 +9,7 @@
 /* Largest coordinate magnitude of the exact corners and of their error: a
  * sample quad_point(a, b), a, b in [0, 1], is the exact point c + a e1 + b e2
  * to within three roundings of numbers below |c| + |e1| + |e2| per axis. */
-static void quad_bounds(ShadowHull *h, const Quad *q)
+static void hull_quad(ShadowHull *h, const Quad *q)
 {
   for (int a = 0; a < 3; a++) {
     double c = q->corner.raw[a], e1 = q->edge1.raw[a], e2 = q->edge2.raw[a];
@@ -56,7 +56,7 @@ static void add_dir(ShadowHull *h, vec3s u, vec3s inside)
 ShadowHull hull_make(const Hit *hit, const Quad *q)
 {
   ShadowHull h = {.p = hit->p, .o = ray_spawn(hit, hit->n).o};
-  quad_bounds(&h, q);
+  hull_quad(&h, q);
   float scale = fmaxf(vec_max_abs(h.p), vec_max_abs(h.o)), far = 0.0f;
   h.lo = h.hi = h.p;
   h.lo = glms_vec3_minv(h.lo, h.o);

@@ -21,7 +21,7 @@ static uint32_t spread3(uint32_t x)
  * over the centres' bounds (a flat scene is not cut along its thin axis). */
 static void morton_codes(Balls items, int n, uint64_t *pair)
 {
-  Box cb = box_empty();
+  Box4 cb = box4_empty();
   float lo0 = cb.lo[0], lo1 = cb.lo[1], lo2 = cb.lo[2];
   float hi0 = cb.hi[0], hi1 = cb.hi[1], hi2 = cb.hi[2];
 #pragma omp parallel for schedule(static) if (n > 65536) \
