@@ -27,7 +27,7 @@ static float other_hit_t(const Instance *in, Ray r, float tmax, Geometry g)
     return g == TEXTBOOK ? textbook_sphere_t(&in->sphere, r, tmax)
                          : float_bc_sphere_t(&in->sphere, r, tmax);
   if (in->shape == SHAPE_PLANE && g == TEXTBOOK)
-    return textbook_plane_t(in->plane, r, tmax);
+    return textbook_plane_t(&in->plane, r, tmax);
   return scene_instance_hit_t(in, r, tmax);
 }
 
@@ -71,12 +71,8 @@ static bool float_bc_any(const Scene *sc, const Ray *r, float tmax)
 {
   return other_any(sc, *r, tmax, FLOAT_BC);
 }
-static void keep(SceneIndex *index)
-{
-  (void)index; /* static: nothing to free */
-}
-static SceneIndex textbook_index = {textbook_closest, textbook_any, keep};
-static SceneIndex float_bc_index = {float_bc_closest, float_bc_any, keep};
+static const SceneIndex textbook_index = {textbook_closest, textbook_any};
+static const SceneIndex float_bc_index = {float_bc_closest, float_bc_any};
 
 /* Step 05's pixel: the centre sample through step 05's own shade_trace. */
 static vec3s px(const Scene *sc, const Film *film, int i, int j, RenderCtx *ctx)
@@ -90,7 +86,7 @@ static vec3s px(const Scene *sc, const Film *film, int i, int j, RenderCtx *ctx)
 static const struct Variant {
   const char *name;
   int scene;
-  SceneIndex *index;
+  const SceneIndex *index;
 } variants[] = {
     {"robust, shipped index (one leaf / BVH)", 0, NULL},
     {"robust, plain loop (RT_ACCEL=loop)", 1, NULL},
@@ -165,6 +161,8 @@ int main(int argc, char **argv)
     printf("| %s | %.2f | %.2f | %.2f | %.3f |\n", variants[v].name, 1e3 * med[v],
            1e3 * sec[v][0], 1e3 * sec[v][runs - 1], med[v] / med[N_VAR - 1]);
   film_free(&film);
+  accel_free(&sc[0]);
+  accel_free(&sc[1]);
   scene_free(&sc[0]);
   scene_free(&sc[1]);
   return 0;

@@ -23,12 +23,7 @@ void scene_free(Scene *scene)
 {
   free(scene->materials);
   free(scene->lights);
-  for (int k = 0; k < scene->n_kept; k++)
-    free(scene->kept[k]);
-  free(scene->kept);
   free(scene->instances);
-  if (scene->index)
-    scene->index->destroy(scene->index);
   scene_init(scene);
 }
 
@@ -59,27 +54,6 @@ bool scene_add_material(Scene *scene, const Material *m)
 bool scene_add_light(Scene *scene, const Light *light)
 {
   return push((void **)&scene->lights, &scene->n_lights, sizeof *light, light);
-}
-
-const void *scene_keep(Scene *scene, const void *shape, size_t size)
-{
-  void *copy = malloc(size);
-  if (!copy) {
-    fprintf(stderr, "scene: out of memory\n");
-    return NULL;
-  }
-  if (!reserve((void **)&scene->kept, scene->n_kept, 1, sizeof *scene->kept)) {
-    free(copy);
-    return NULL;
-  }
-  memcpy(copy, shape, size);
-  scene->kept[scene->n_kept++] = copy;
-  return copy;
-}
-
-const Plane *scene_add_plane(Scene *scene, const Plane *plane)
-{
-  return scene_keep(scene, plane, sizeof *plane);
 }
 
 bool scene_add_instance(Scene *scene, const Instance *inst)
@@ -163,10 +137,7 @@ bool scene_prepare(Scene *scene, unsigned features)
 {
   memset(&scene->info, 0, sizeof scene->info);
   scene->n_instances = scene->n_shapes; /* in case of a second call */
-  if (scene->index) { /* built over the instances of a first call */
-    scene->index->destroy(scene->index);
-    scene->index = NULL;
-  }
+  scene->index = NULL;                  /* built over the instances of a first call */
   if (!(features & SCENE_AMBIENT) && !vec_is_zero(scene->ambient)) {
     scene->info.ignored |= SCENE_AMBIENT;
     scene->ambient = glms_vec3_zero();
@@ -260,19 +231,10 @@ bool scene_intersect(const Scene *scene, Ray r, float tmax, Hit *hit)
 
 bool scene_occluded(const Scene *scene, Ray r, float tmax)
 {
-  if (scene->no_occluders)
-    return false;
   if (scene->index)
     return scene->index->any(scene, &r, tmax);
   for (int k = 0; k < scene->n_shapes; k++)
     if (scene_instance_hit_t(&scene->instances[k], r, tmax) < tmax)
       return true;
   return false;
-}
-
-Scene scene_view_unoccluded(const Scene *scene)
-{
-  Scene view = *scene;
-  view.no_occluders = true;
-  return view;
 }

@@ -18,11 +18,9 @@
 typedef enum ShapeType { SHAPE_REGISTRY(SHAPE_ENUM_) SHAPE_COUNT } ShapeType;
 #undef SHAPE_ENUM_
 
-/* A shape paired with a material or a light. A small shape is kept in place
- * (the sphere: `Sphere sphere`); a larger one where the scene keeps it
- * (`const Plane *plane`: the scene's copy, scene_keep; a quad's is its area
- * light's, Scene.lights[light].quad), so that every instance stays as small
- * as a sphere's. The member is named as the shape (SHAPE_REGISTRY's STORE column). */
+/* A shape paired with a material or a light. The instance holds its shape
+ * (INPLACE in SHAPE_REGISTRY), except an area light's quad, which it points
+ * to (KEPT: Scene.lights[light].quad). The member is named as the shape. */
 #define SHAPE_MEMBER_(NAME, name, Type, STORE, DOC) SHAPE_MEMBER_##STORE(Type, name)
 typedef struct Instance {
   ShapeType shape;
@@ -33,15 +31,6 @@ typedef struct Instance {
   };
 } Instance;
 #undef SHAPE_MEMBER_
-
-/* A shape kept in place fits where a sphere does. */
-#define SHAPE_SMALL_(NAME, name, Type, STORE, DOC)                                    \
-  _Static_assert(SHAPE_FITS_##STORE(Type), #name " is kept in place (INPLACE in "     \
-                 "common/shapes.h): at most 16 bytes, else KEPT");
-#define SHAPE_FITS_INPLACE(Type) sizeof(Type) <= 16
-#define SHAPE_FITS_KEPT(Type) 1
-SHAPE_REGISTRY(SHAPE_SMALL_)
-#undef SHAPE_SMALL_
 
 /* What a step knows how to render; the rest of a scene is ignored (and said). */
 enum SceneFeature {
@@ -61,11 +50,14 @@ typedef struct SceneInfo {
 
 struct Scene;
 
-/* An acceleration structure over the instances (pack_index, app/pack.h,
- * builds one). It only chooses which instances a query tests; every test calls the
- * shape's own function (scene_instance_hit_t), so its answers are the plain
- * loop's: the closest hit keeps the first of equal distances in instance
- * order, as the loop does. */
+/* The scene's two queries as a table of functions, which scene_intersect and
+ * scene_occluded call when Scene.index points to one: an index over the
+ * instances (the speed pack's, app/pack.h), or a wrapper that records or
+ * counts the queries and passes them on. It only chooses which instances a
+ * query tests; every test calls the shape's own function
+ * (scene_instance_hit_t), so its answers are the plain loop's: the closest
+ * hit keeps the first of equal distances in instance order, as the loop
+ * does. Whoever fills the table owns it and what it stands for. */
 typedef struct SceneIndex {
   /* Closest instance with t in (0, *tmax), *tmax becoming its distance; NULL
    * when none. The ray by address: a Ray passed by value goes through the
@@ -74,7 +66,6 @@ typedef struct SceneIndex {
   const struct Instance *(*closest)(const struct Scene *scene, const Ray *r, float *tmax);
   /* True when some lit shape lies on the ray with t in (0, tmax). */
   bool (*any)(const struct Scene *scene, const Ray *r, float tmax);
-  void (*destroy)(struct SceneIndex *index); /* frees the index */
 } SceneIndex;
 
 typedef struct Scene {
@@ -88,18 +79,12 @@ typedef struct Scene {
   int n_materials;
   Light *lights;
   int n_lights;
-  void **kept;             /* the shapes instances point to (scene_keep),
-                            * each owned */
-  int n_kept;
   Instance *instances;     /* lit shapes first, then the lights' shapes */
   int n_instances;         /* all instances the camera sees */
   int n_shapes;            /* instances [0, n_shapes) have a material */
   SceneInfo info;          /* set by scene_prepare */
-  SceneIndex *index;       /* acceleration structure, owned; NULL: the queries
-                            * test every instance in order */
-  bool no_occluders;       /* scene_occluded answers false: a view of the
-                            * scene (scene_view_unoccluded) for points that
-                            * nothing can shadow */
+  const SceneIndex *index; /* the queries' table, not owned; NULL: they test
+                            * every instance in order */
 } Scene;
 
 /* Scene limits the parser enforces (no memory blow-up from one line). */
@@ -116,14 +101,6 @@ bool scene_add_material(Scene *scene, const Material *m);
 bool scene_add_light(Scene *scene, const Light *light);
 bool scene_add_instance(Scene *scene, const Instance *inst);
 
-/* scene_keep for a plane (a SHAPE_PLANE instance's). */
-const Plane *scene_add_plane(Scene *scene, const Plane *plane);
-
-/* A copy of the `size` bytes of `shape` (a Plane, a Disc, ...), kept by the
- * scene until scene_free, for an instance to point to; NULL when out of
- * memory (one line printed). */
-const void *scene_keep(Scene *scene, const void *shape, size_t size);
-
 /* The box of an instance's shape (sphere_bounds, plane_bounds, ...):
  * infinite along the axes an unbounded shape extends in (box_is_bounded). */
 Box scene_instance_bounds(const Instance *inst);
@@ -135,8 +112,9 @@ const char *scene_shape_name(ShapeType shape);
 /* Get the scene ready for a step that handles `features` (SceneFeature bits):
  * drop what it cannot render (recorded in info.ignored), order the instances,
  * fill info and derive the camera for the film's aspect. The lights' shapes
- * point into Scene.lights: a light added afterwards needs another call. The acceleration
- * structure is built afterwards, by whoever wants one (accel_build).
+ * point into Scene.lights: a light added afterwards needs another call. Sets
+ * Scene.index to NULL: an index is built afterwards, by whoever wants one
+ * (pack_index, app/pack.h).
  * False when out of memory (the scene is then only fit for scene_free). */
 bool scene_prepare(Scene *scene, unsigned features);
 
@@ -152,11 +130,6 @@ bool scene_intersect(const Scene *scene, Ray r, float tmax, Hit *hit);
 /* Any-hit query: true when some lit shape (lights' shapes never occlude) lies
  * on the ray with t in (0, tmax). Stops at the first one found. */
 bool scene_occluded(const Scene *scene, Ray r, float tmax);
-
-/* A copy of `scene` whose any-hit queries answer false (no_occluders set):
- * what a shading point sees when the renderer has proved that nothing lies
- * between it and a light (pack_light_view, app/pack.h). */
-Scene scene_view_unoccluded(const Scene *scene);
 
 /* The index of the material called `name`, or -1. */
 int scene_find_material(const Scene *scene, const char *name);

@@ -22,16 +22,16 @@
  *     Box   name_bounds(const Type *)
  *     Type  name_example(vec3s at, float size, vec3s axis)
  *     bool  name_surface(const Type *, long double u, long double v, SurfacePoint *)
- *   STORE: INPLACE for a shape of at most 16 bytes kept in the instance (the
- *   sphere), KEPT for a larger one the instance points to (the scene's
- *   copy, scene_keep), so that every instance stays as small as a sphere's;
+ *   STORE: INPLACE for a shape the instance holds (every lit shape), KEPT
+ *   for one it points to, which another part of the scene holds (the quad:
+ *   its area light's, Scene.lights[light].quad);
  *   DOC: where its hit functions are explained (the conformance suite's
  *   messages cite it). */
 #define SHAPE_REGISTRY(X)                                                                       \
   X(SPHERE, sphere, Sphere, INPLACE, "docs/02-intersection.md, \"What you write\"")     \
-  X(PLANE, plane, Plane, KEPT, "docs/02-intersection.md, \"What you write\"")           \
+  X(PLANE, plane, Plane, INPLACE, "docs/02-intersection.md, \"What you write\"")        \
   X(QUAD, quad, Quad, KEPT, "docs/08-area-lights.md, \"The light\"")                      \
-  X(DISC, disc, Disc, KEPT, "docs/scene-format.md, \"Statements\"")
+  X(DISC, disc, Disc, INPLACE, "docs/scene-format.md, \"Statements\"")
 
 /* The instance's member for a shape, and a pointer to its shape. */
 #define SHAPE_MEMBER_INPLACE(Type, name) Type name;

@@ -36,9 +36,9 @@ static inline void add_sphere(Scene *s, vec3s c, float r)
 static inline void add_plane(Scene *s, vec3s point, vec3s normal)
 {
   Plane pl = plane_make(point, normal);
-  Instance in = {.shape = SHAPE_PLANE, .plane = scene_add_plane(s, &pl), .material = 0,
+  Instance in = {.shape = SHAPE_PLANE, .plane = pl, .material = 0,
                  .light = -1};
-  cr_assert(in.plane && scene_add_instance(s, &in), "out of memory");
+  cr_assert(scene_add_instance(s, &in), "out of memory");
 }
 
 static inline void add_point(Scene *s, vec3s pos, vec3s power)

@@ -23,8 +23,8 @@ static void spheres_on_floor(Scene *s, Rng *g, int n, float half)
   Material m = {.name = "m", .diffuse = vec_make(0.5f, 0.5f, 0.5f)};
   cr_assert(scene_add_material(s, &m), "out of memory");
   Plane floor = plane_make(vec_make(0, 0, 0), vec_make(0, 1, 0));
-  Instance pl = {.shape = SHAPE_PLANE, .plane = scene_add_plane(s, &floor), .light = -1};
-  cr_assert(pl.plane && scene_add_instance(s, &pl), "out of memory");
+  Instance pl = {.shape = SHAPE_PLANE, .plane = floor, .light = -1};
+  cr_assert(scene_add_instance(s, &pl), "out of memory");
   for (int k = 0; k < n; k++) {
     Instance in = {.shape = SHAPE_SPHERE, .light = -1};
     in.sphere.center = vec_make(uni(g, -half, half), uni(g, 0, 5), uni(g, -half, half));
@@ -132,7 +132,7 @@ static int wrong_instance(const Scene *s, Ray r, float tmax, float best, float *
     const Instance *in = &s->instances[m];
     if (in->shape != SHAPE_SPHERE && in->shape != SHAPE_PLANE)
       continue;
-    Exact e = in->shape == SHAPE_SPHERE ? exact_sphere(&in->sphere, r) : exact_plane(in->plane, r);
+    Exact e = in->shape == SHAPE_SPHERE ? exact_sphere(&in->sphere, r) : exact_plane(&in->plane, r);
     float t = scene_instance_hit_t(in, r, INFINITY);
     bool wrong = isnan(t) || (e.decidable && (t < INFINITY) != (e.t < INFINITY)) ||
                  (e.decidable && t < INFINITY && fabsl(t - e.t) > 1e-4L * e.t);
@@ -191,8 +191,8 @@ static void blame(Blame *b, const Scene *s, Ray r, float tmax, float best, bool 
              m, in->sphere.radius, in->sphere.center.x, in->sphere.center.y, in->sphere.center.z);
   else
     snprintf(shape, sizeof shape, "instance #%d, the plane through (%.9g, %.9g, %.9g) with "
-             "normal (%.9g, %.9g, %.9g)", m, in->plane->point.x, in->plane->point.y,
-             in->plane->point.z, in->plane->normal.x, in->plane->normal.y, in->plane->normal.z);
+             "normal (%.9g, %.9g, %.9g)", m, in->plane.point.x, in->plane.point.y,
+             in->plane.point.z, in->plane.normal.x, in->plane.normal.y, in->plane.normal.z);
   CHECK_THAT(in->shape == SHAPE_SPHERE ? &b->sphere : &b->plane, false, "%s\n  the ray o = "
              "(%.9g, %.9g, %.9g), d = (%.9g, %.9g, %.9g) gets a wrong answer from %s, so the "
              "scene index (given code), which tests only the shapes a ray can meet, and the "
@@ -247,6 +247,7 @@ static void check_layout(const char *layout, int n, int rays)
   Scene s;
   random_scene(&s, &g, n);
   check_answers(&s, &g, layout, rays);
+  accel_free(&s);
   scene_free(&s);
   unsetenv("RT_ACCEL");
 }
@@ -297,8 +298,8 @@ Test(accel, large_scenes_give_the_plain_loops_answers)
       cr_assert(scene_add_material(&s, &m), "out of memory");
       for (int k = 0; k < 70000; k++) {
         Plane below = plane_make(vec_make(0, -100.0f - (float)k, 0), vec_make(0, 1, 0));
-        Instance pl = {.shape = SHAPE_PLANE, .light = -1, .plane = scene_add_plane(&s, &below)};
-        cr_assert(pl.plane && scene_add_instance(&s, &pl), "out of memory");
+        Instance pl = {.shape = SHAPE_PLANE, .light = -1, .plane = below};
+        cr_assert(scene_add_instance(&s, &pl), "out of memory");
       }
       for (int k = 0; k < 10; k++) {
         Instance in = {.shape = SHAPE_SPHERE, .light = -1,
@@ -317,6 +318,7 @@ Test(accel, large_scenes_give_the_plain_loops_answers)
     static const char *what[] = {"spheres before the floor", "floor among the spheres",
                                  "10 spheres after 70000 planes"};
     check_answers(&s, &g, what[variant], 2000);
+    accel_free(&s);
     scene_free(&s);
   }
 }
@@ -496,8 +498,8 @@ static void cone_scene(Scene *s, Rng *g, int n, int variant)
   spheres_on_floor(s, g, n, 6);
   if (variant % 2) {
     Plane tilted = plane_make(vec_make(0, -0.5f, 0), vec_make(0.1f, 1, 0.05f));
-    Instance pl = {.shape = SHAPE_PLANE, .light = -1, .plane = scene_add_plane(s, &tilted)};
-    cr_assert(pl.plane && scene_add_instance(s, &pl), "out of memory");
+    Instance pl = {.shape = SHAPE_PLANE, .light = -1, .plane = tilted};
+    cr_assert(scene_add_instance(s, &pl), "out of memory");
   }
   const Sphere *inside = &s->instances[1 + (int)(rng_float(g) * (float)n)].sphere;
   s->camera.eye = variant == 2 ? inside->center : vec_make(uni(g, -12, 12), uni(g, 0.5f, 8), 12);
@@ -635,8 +637,84 @@ Test(accel, cones_give_the_plain_loops_answers)
           check_ray(&c, &s, along, k % 3 ? INFINITY : uni(&g, 0.1f, 20), false,
                     "ray along the directional light", n, variant, k);
         }
+        accel_free(&s);
         scene_free(&s);
       }
     }
   blame_done(&c);
+}
+
+/* Spheres and (in odd variants) tilted discs over the floor under an area
+ * light, 16 light samples: the any-hit query recognises the shadow rays
+ * toward the light by their end and tests only the shapes that may stand
+ * between their origin and the light (fast/index/accel.c, hull.c). */
+static void area_scene(Scene *s, Rng *g, int n, int variant)
+{
+  spheres_on_floor(s, g, n, 4);
+  for (int k = 0; variant % 2 && k < 3; k++) {
+    Instance d = {.shape = SHAPE_DISC, .light = -1,
+                  .disc = disc_make(vec_make(uni(g, -3, 3), uni(g, 0.5f, 2.5f), uni(g, -3, 3)),
+                                    random_unit(g), uni(g, 0.2f, 1.0f))};
+    cr_assert(scene_add_instance(s, &d), "out of memory");
+  }
+  Light area = {.type = LIGHT_AREA, .power = vec_make(10, 10, 10),
+                .quad = quad_make(vec_make(uni(g, -2, 0), uni(g, 4, 6), uni(g, -2, 0)),
+                                  vec_make(uni(g, 0.5f, 3), 0, uni(g, -0.5f, 0.5f)),
+                                  vec_make(uni(g, -0.5f, 0.5f), uni(g, -1, 0), uni(g, 0.5f, 3)))};
+  cr_assert(scene_add_light(s, &area), "out of memory");
+  s->light_samples = 16;
+  cr_assert(scene_prepare(s, SCENE_CAMERA | SCENE_LIGHTS | SCENE_AREA_LIGHTS), "out of memory");
+  cr_assert(accel_build(s), "accel_build (given code) failed");
+}
+
+/* The shadow rays of shading points toward an area light (the step's own:
+ * ray_spawn toward a random point of the light, ray_shadow_tmax of its
+ * distance), from points on the floor, the spheres and the discs: the plain
+ * loop's answers, whether the index tests the shapes the hull leaves (none,
+ * a few) or the whole scene; each of the first two must occur often. */
+Test(accel, area_light_shadow_rays_give_the_plain_loops_answers)
+{
+  stress_step(8);
+  Blame c = blame_make("scene index (given code: fast/index/accel.c, hull.c)",
+                       "docs/performance.md, \"Shadow rays toward an area light\"");
+  static const char *const layouts[] = {"flat", "bvh", ""};
+  int kinds[3] = {0, 0, 0}; /* points whose rays test no shape, a few, the whole index */
+  for (int variant = 0; variant < 6; variant++) {
+    setenv("RT_ACCEL", layouts[variant % 3], 1);
+    for (int rep = 0; rep < 8; rep++) {
+      int n = 1 + rep * 5 + variant;
+      Rng g = rng_make(17, (uint32_t)(variant * 100 + rep), 0);
+      Scene s;
+      area_scene(&s, &g, n, variant);
+      const Quad *q = &s.lights[0].quad;
+      for (int p = 0; p < 300; p++) {
+        Ray cam = {.o = vec_make(uni(&g, -5, 5), 7, uni(&g, -5, 5)),
+                   .d = glms_vec3_normalize(vec_make(uni(&g, -0.6f, 0.6f), -1, uni(&g, -0.6f, 0.6f)))};
+        Hit hit;
+        if (!scene_intersect(&s, cam, INFINITY, &hit) || hit.inst->light >= 0)
+          continue;
+        int ids[8];
+        int shapes = accel_area_shapes(&s, ray_spawn(&hit, hit.n).o, q, ids, 8);
+        kinds[shapes == 0 ? 0 : shapes > 0 ? 1 : 2]++;
+        for (int k = 0; k < 32; k++) {
+          vec3s x = quad_point(q, rng_float(&g), rng_float(&g)), to_x = glms_vec3_sub(x, hit.p);
+          float dist = glms_vec3_norm(to_x);
+          vec3s l = glms_vec3_scale(to_x, 1.0f / dist);
+          if (!(glms_vec3_dot(hit.n, l) > 0.0f))
+            continue;
+          check_ray(&c, &s, ray_spawn(&hit, l), ray_shadow_tmax(dist), false,
+                    "shadow ray toward the area light", n, variant, k);
+        }
+      }
+      accel_free(&s);
+      scene_free(&s);
+    }
+  }
+  unsetenv("RT_ACCEL");
+  blame_done(&c);
+  Check k = CHECK("accel_area_shapes (given code: fast/index/accel.c)",
+                  "docs/performance.md, \"Shadow rays toward an area light\"");
+  CHECK_THAT(&k, kinds[0] > 500 && kinds[1] > 500, "shading points whose shadow rays test no "
+             "shape %d, a few %d, the whole index %d: expected more than 500 of the first two "
+             "(the test must matter)", kinds[0], kinds[1], kinds[2]);
 }

@@ -78,7 +78,7 @@ static bool ref_occluded(const Scene *sc, int skip, L3 o, L3 d, LD tmax, LD shif
       continue;
     LD clear = INFINITY;
     LD t = in->shape == SHAPE_SPHERE ? ref_sphere(&in->sphere, o, d, tmax, &clear)
-                                     : ref_plane(in->plane, o, d, tmax);
+                                     : ref_plane(&in->plane, o, d, tmax);
     hit |= t < tmax;
     if (in->shape == SHAPE_SPHERE) {
       L3 f = sub(o, l3(in->sphere.center));
@@ -146,7 +146,7 @@ static L3 ref_pixel(const Scene *sc, LD nx, LD ny, LD coord, bool *amb)
     const Instance *in = &sc->instances[k];
     LD clear = INFINITY;
     LD tk = in->shape == SHAPE_SPHERE ? ref_sphere(&in->sphere, eye, d, t, &clear)
-                                      : ref_plane(in->plane, eye, d, t);
+                                      : ref_plane(&in->plane, eye, d, t);
     if (in->shape == SHAPE_SPHERE) {
       L3 f = sub(eye, l3(in->sphere.center));
       *amb |= clear < (CAM_ANGLE + DECIDE) * sqrtl(dot(f, f));
@@ -159,7 +159,7 @@ static L3 ref_pixel(const Scene *sc, LD nx, LD ny, LD coord, bool *amb)
   const Instance *in = &sc->instances[best];
   L3 p = add(eye, mul(d, t));
   L3 n = in->shape == SHAPE_SPHERE ? mul(sub(p, l3(in->sphere.center)), 1.0L / in->sphere.radius)
-                                   : l3(in->plane->normal);
+                                   : l3(in->plane.normal);
   if (dot(n, d) > 0.0L)
     n = mul(n, -1.0L);
   /* The float hit point lies up to CAM_ANGLE t / cos(incidence) away along
@@ -226,7 +226,7 @@ static void write_scene(const Scene *base, const char *path, double s, double T,
     const char *mat = base->materials[in->material].name;
     if (in->shape == SHAPE_PLANE)
       fprintf(f, "plane point %.9g %.9g %.9g normal %.9g %.9g %.9g material %s\n",
-              PT(in->plane->point), in->plane->normal.x, in->plane->normal.y, in->plane->normal.z, mat);
+              PT(in->plane.point), in->plane.normal.x, in->plane.normal.y, in->plane.normal.z, mat);
     else
       fprintf(f, "sphere center %.9g %.9g %.9g radius %.9g material %s\n", PT(in->sphere.center),
               s * in->sphere.radius, mat);

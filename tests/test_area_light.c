@@ -1,7 +1,6 @@
 /* Unit tests of step 08's area lights (shade_area, shade_phong, shade_trace):
  * the estimate against Lambert's closed-form polygon irradiance (bias checked
- * over many seeds, with and without the shadow-volume skip), the shadow views
- * against the whole scene, a tiny light
+ * over many seeds, through shade_phong and shade_area), a tiny light
  * against a point light, one-sidedness, light patterns keyed by pixel and
  * camera sample (also through the step's binary), and the radiance the camera
  * sees. docs/08-area-lights.md. */
@@ -11,8 +10,6 @@
 #include <stdlib.h>
 #include <sys/stat.h>
 
-#include "index/accel.h"
-#include "index/light_view.h"
 #include "app/image.h"
 #include "app/parser.h"
 #include "rng.h"
@@ -44,12 +41,11 @@ static Hit floor_hit(const Scene *s, float x, float z)
 
 #define DOC_LIGHT "docs/08-area-lights.md, \"The estimate: N point lights\""
 #define DOC_KEYS "docs/08-area-lights.md, \"Where the samples go\""
-#define DOC_SKIP "docs/08-area-lights.md, \"Points nothing can shadow\""
 
 /* The eye the tests shade toward. */
 static const vec3s EYE = {.x = 0.0f, .y = 1.0f, .z = 5.0f};
 
-/* The red channel of shade_phong at `h` (with the shadow-volume skip) for
+/* The red channel of shade_phong at `h` for
  * seed, light samples and pattern; pixel 7, camera sample 0. */
 static double estimate(const Scene *s, const Hit *h, uint32_t seed, int n, int kind,
                        uint64_t *rays)
@@ -132,8 +128,8 @@ Test(area_light, lambert_reference_gives_pi_L_under_a_huge_light)
              "irradiance under a square light filling the sky, radiance 1 (pi)");
 }
 
-/* Mean and standard error over `seeds` seeds of shade_phong (skip = true: the
- * shadow-volume skip may apply) or of shade_area with every ray traced. */
+/* Mean and standard error over `seeds` seeds of shade_phong (skip = true)
+ * or of shade_area. */
 static void seed_stats(const Scene *s, const Hit *h, int n, int kind, int seeds, bool skip,
                        double *mean, double *se)
 {
@@ -149,10 +145,8 @@ static void seed_stats(const Scene *s, const Hit *h, int n, int kind, int seeds,
   *se = sqrt(fmax(var, 0.0) / seeds);
 }
 
-/* Every pattern that claims to be unbiased (random, jitter, Sobol), with all
- * shadow rays traced (shade_area, 16 samples) and through shade_phong, whose
- * shadow-volume skip shades these unshadowed points without a ray (64
- * samples): the mean over 64 seeds lies within 4 standard errors (plus float
+/* Every pattern that claims to be unbiased (random, jitter, Sobol), through
+ * shade_area (16 samples) and through shade_phong (64 samples): the mean over 64 seeds lies within 4 standard errors (plus float
  * rounding of the sum) of Lambert's closed form. */
 Test(area_light, unoccluded_estimate_is_unbiased_against_lambert_formula)
 {
@@ -173,7 +167,7 @@ Test(area_light, unoccluded_estimate_is_unbiased_against_lambert_formula)
         double ref = (double)lambert(v, p, n, L), mean, se;
         int samples = skip ? 64 : 16;
         seed_stats(&s, &h, samples, kinds[kk], 64, skip, &mean, &se);
-        const char *how = skip ? "shade_phong (the skip)" : "shade_area";
+        const char *how = skip ? "shade_phong" : "shade_area";
         CHECK_NEAR(&k, ref, mean, 4.0 * se + 1e-5 * ref, "%s, %s, %d light samples, floor "
                    "point (%g, 0, %g) under a tilted light: mean over 64 seeds of the red "
                    "irradiance against Lambert's formula (4 standard errors)", how,
@@ -273,111 +267,6 @@ Test(area_light, point_behind_the_light_gets_nothing)
   CHECK_THAT(&k, lit > 0.1, "the floor point under the same light: red %g, expected more "
              "than 0.1", lit);
   scene_free(&s);
-}
-
-Test(area_light, shadow_volume_skip_equals_the_same_estimate_without_rays)
-{
-  /* Nothing between the floor and the light: shade_phong shades the samples
-   * in a view of the scene with no occluders (no shadow ray at all), the grid
-   * with a quarter of its samples but at least 16 (16 of 16, 16 of 64, 64 of
-   * 256), the other patterns with all, and must give exactly what shade_area
-   * gives for that many samples with every shadow ray traced. */
-  Scene s;
-  load(&s, "light area corner -1 3 -0.5 edge1 2 0 0 edge2 0 0.4 1 power 6 6 6");
-  Hit h = floor_hit(&s, 0.4f, -0.3f);
-  const int budget[3] = {16, 64, 256}, grid_used[3] = {16, 16, 64};
-  Check k = CHECK("shade_phong's shadow-volume skip", DOC_SKIP);
-  for (int kind = SAMPLER_GRID; kind < SAMPLER_COUNT; kind++)
-    for (int b = 0; b < 3; b++) {
-      int used[3] = {budget[0], budget[1], budget[2]};
-      if (kind == SAMPLER_GRID)
-        memcpy(used, grid_used, sizeof used);
-      uint64_t rays, traced_rays;
-      double skipped = estimate(&s, &h, 9, budget[b], kind, &rays);
-      double traced = area(&s, &h, 9, used[b], kind, 7, 0, &traced_rays);
-      CHECK_NEAR(&k, traced, skipped, 0.0, "%s, %d light samples, a floor point nothing "
-                 "shadows: red with the skip against shade_area with %d samples, every ray "
-                 "traced", sampler_name((SamplerKind)kind), budget[b], used[b]);
-      CHECK_INT(&k, 0, rays, "%s, %d light samples, the same point: shadow rays traced with "
-                "the skip", sampler_name((SamplerKind)kind), budget[b]);
-      CHECK_INT(&k, used[b], traced_rays, "%s, shade_area with %d samples, the same point: "
-                "shadow rays", sampler_name((SamplerKind)kind), used[b]);
-    }
-  CHECK_DONE(&k);
-  scene_free(&s);
-}
-
-/* A random shadow ray from the spawned origin of h to a point of the light
- * (its front side only); false when the point is behind h. */
-static bool random_shadow_ray(const Hit *h, const Quad *q, Rng *r, Ray *ray, float *tmax)
-{
-  vec3s x = quad_point(q, rng_float(r), rng_float(r));
-  vec3s to_x = glms_vec3_sub(x, h->p);
-  float dist = glms_vec3_norm(to_x);
-  vec3s l = glms_vec3_scale(to_x, 1.0f / dist);
-  if (!(glms_vec3_dot(h->n, l) > 0.0f))
-    return false;
-  *ray = ray_spawn(h, l);
-  *tmax = ray_shadow_tmax(dist);
-  return true;
-}
-
-Test(area_light, shadow_views_answer_every_shadow_ray_as_the_scene_does)
-{
-  /* Random spheres over the floor; shading points on the floor and on the
-   * spheres. light_view_make gives a view whose shadow queries test only
-   * the shapes that may stand in the way (none: no ray at all). For 64
-   * random shadow rays per point, scene_occluded on the view must answer as
-   * on the whole scene (the ray code itself). Each kind of view must occur
-   * often enough to matter. */
-  Rng r = rng_make(7, 0, 0);
-  int counts[3] = {0, 0, 0}; /* views with no shape, some shapes, the whole scene */
-  Check k = CHECK("light_view_make, accel_quad_unoccluded", DOC_SKIP);
-  for (int scene_k = 0; scene_k < 20; scene_k++) {
-    char text[1024];
-    int len = snprintf(text, sizeof text,
-                       "light area corner -1 3 -0.5 edge1 2 0 0 edge2 0 0.4 1 power 6 6 6\n");
-    for (int q = 0; q < 4; q++)
-      len += snprintf(text + len, sizeof text - (size_t)len,
-                      "sphere center %g %g %g radius %g material white\n",
-                      6.0f * rng_float(&r) - 3.0f, 2.5f * rng_float(&r),
-                      6.0f * rng_float(&r) - 3.0f, 0.1f + 0.6f * rng_float(&r));
-    Scene s;
-    load(&s, text);
-    if (scene_k % 2) /* half through the hierarchy's boxes, half the plain loop */
-      cr_assert(accel_build(&s));
-    const Quad *q = &s.lights[0].quad;
-    for (int p = 0; p < 200; p++) {
-      Hit h;
-      Ray cam = {.o = vec_make(6.0f * rng_float(&r) - 3.0f, 5.0f, 6.0f * rng_float(&r) - 3.0f),
-                 .d = glms_vec3_normalize(vec_make(rng_float(&r) - 0.5f, -1.0f,
-                                                   rng_float(&r) - 0.5f))};
-      if (!scene_intersect(&s, cam, INFINITY, &h) || h.inst->light >= 0)
-        continue;
-      PackView pv;
-      int n = light_view_make(&s, &h, q, &pv);
-      const Scene *view = &pv.scene;
-      counts[n == 0 ? 0 : n > 0 ? 1 : 2]++;
-      CHECK_INT(&k, n == 0, accel_quad_unoccluded(&s, &h, q), "random scene %d, point (%g, %g, "
-                "%g): accel_quad_unoccluded against a view with no shape", scene_k, h.p.x,
-                h.p.y, h.p.z);
-      int differ = 0;
-      for (int j = 0; j < 64; j++) {
-        Ray ray;
-        float tmax;
-        if (random_shadow_ray(&h, q, &r, &ray, &tmax))
-          differ += scene_occluded(view, ray, tmax) != scene_occluded(&s, ray, tmax);
-      }
-      CHECK_INT(&k, 0, differ, "random scene %d, point (%g, %g, %g), a view testing %d shapes: "
-                "shadow rays of 64 answered otherwise than on the scene", scene_k, h.p.x, h.p.y,
-                h.p.z, n);
-    }
-    scene_free(&s);
-  }
-  CHECK_DONE(&k);
-  CHECK_THAT(&k, counts[0] > 100 && counts[1] > 100, "views with no shape %d, with some %d, "
-             "the whole scene %d: expected more than 100 of the first two (the test must "
-             "matter)", counts[0], counts[1], counts[2]);
 }
 
 Test(area_light, a_hidden_light_adds_nothing)

@@ -96,8 +96,8 @@ Test(bounds, instance_takes_its_shape)
   Plane pl = plane_make(vec_make(0, -1, 0), vec_make(0, 1, 0));
   Quad q = quad_make(vec_make(0, 0, 0), vec_make(2, 0, 0), vec_make(0, 0, 3));
   Disc d = disc_make(vec_make(0, 0, 0), vec_make(0, 0, 1), 2.0f);
-  Instance in[] = {{.shape = SHAPE_SPHERE, .sphere = s}, {.shape = SHAPE_PLANE, .plane = &pl},
-                   {.shape = SHAPE_QUAD, .quad = &q}, {.shape = SHAPE_DISC, .disc = &d}};
+  Instance in[] = {{.shape = SHAPE_SPHERE, .sphere = s}, {.shape = SHAPE_PLANE, .plane = pl},
+                   {.shape = SHAPE_QUAD, .quad = &q}, {.shape = SHAPE_DISC, .disc = d}};
   Box want[] = {sphere_bounds(&s), plane_bounds(&pl), quad_bounds(&q), disc_bounds(&d)};
   for (int k = 0; k < 4; k++) {
     Box got = scene_instance_bounds(&in[k]);

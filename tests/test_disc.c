@@ -120,7 +120,7 @@ Test(disc, statement_into_the_scene)
                 "a disc statement: expected 1 instance of shape SHAPE_DISC (%d), got %d "
                 "instance(s), the first of shape %d", SHAPE_DISC, s.n_instances,
                 s.n_instances ? (int)s.instances[0].shape : -1);
-  const Disc *d = s.instances[0].disc;
+  const Disc *d = &s.instances[0].disc;
   CHECK_VEC(&c, vec_make(1, 2, 3), d->center, 0.0, "disc center 1 2 3");
   CHECK_VEC(&c, vec_make(0, 1, 0), d->normal, 0.0, "disc normal 0 3 0: stored unit");
   CHECK_NEAR(&c, 0.5, d->radius, 0.0, "disc radius 0.5");
@@ -171,7 +171,7 @@ Test(disc, the_scene_file_shows_a_disc)
     if (s.instances[k].shape == SHAPE_DISC)
       disc = k;
   CHECK_REQUIRE(&c, disc >= 0, "scenes/disc.scene: expected a disc instance, found none");
-  const Disc *d = s.instances[disc].disc;
+  const Disc *d = &s.instances[disc].disc;
   Ray down = {.o = vec_make(d->center.x, d->center.y + 3.0f, d->center.z),
               .d = vec_make(0, -1, 0)};
   Hit h;

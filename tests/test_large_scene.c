@@ -1,7 +1,7 @@
 /* A scene text over 4 MB that uses every statement and every light type,
- * read as the program reads it (parser_load_text: with the speed pack, a
- * text this large is parsed in pieces at once and merged) and in one pass
- * (parser_load_whole): both must give the same scene, and hold every line
+ * read as the program reads it (parser_load_text: with the speed pack, its
+ * sphere lines read straight from the text) and by the general path alone
+ * (sphere_line_on off): both must give the same scene, and hold every line
  * the test wrote. Its lines are the examples of the parser's statement table
  * (parser_statement_example) and one of each light type (taken from the
  * parser's own message: a light type added to the parser and not to this
@@ -9,12 +9,11 @@
 #include "parse_capture.h"
 #include "check.h"
 
-#include "threads.h"
 #include <stdlib.h>
 
 #include "app/parser.h"
 #include "app/parser_state.h"
-#include "reader/pieces.h"
+#include "reader/sphere_line.h"
 #include "same_instance.h"
 
 #define DOC "docs/extending.md, \"Adding a shape\""
@@ -162,19 +161,15 @@ Test(large_scene, every_statement_arrives_through_the_large_text_path)
                "test's scene text does not use: add a line of it to block()", types[k]);
   }
 
-  int threads = omp_get_max_threads();
-  omp_set_num_threads(4); /* the pieces path wants two threads or more */
   Scene fast, whole;
   scene_init(&fast);
   scene_init(&whole);
-  int reparses = pieces_reparses;
   bool ok_fast = parser_load_text("large.scene", text, len, &fast);
-  bool ok_whole = parser_load_whole("large.scene", text, len, &whole);
-  omp_set_num_threads(threads);
+  sphere_line_on = false;
+  bool ok_whole = parser_load_text("large.scene", text, len, &whole);
+  sphere_line_on = true;
   CHECK_REQUIRE(&c, ok_fast && ok_whole, "the large scene text: expected both parses to "
-                "succeed, got parser_load_text %d, parser_load_whole %d", ok_fast, ok_whole);
-  CHECK_INT(&c, reparses, pieces_reparses, "parses again whole after the pieces of a valid "
-            "text failed (fast/reader/pieces.c: its merge refused a line)");
+                "succeed, got %d with the pack's sphere lines, %d without", ok_fast, ok_whole);
 
   /* Every line arrived (counted from what the test wrote). */
   Counts want = one_block(), got = counts_of(&fast);

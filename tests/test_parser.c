@@ -73,8 +73,8 @@ Test(parser, every_statement_into_the_scene)
   CHECK_NEAR(&c, 1.0, sph->sphere.radius, 0.0, "sphere radius");
   CHECK_INT(&c, 0, sph->material, "the sphere's material, red, defined after it: index 0");
   CHECK_INT(&c, SHAPE_PLANE, pl->shape, "second shape: a plane");
-  CHECK_VEC(&c, vec_make(0, -1, 0), pl->plane->point, 0.0, "plane point");
-  CHECK_VEC(&c, vec_make(0, 1, 0), pl->plane->normal, 0.0, "plane normal 0 2 0, normalised");
+  CHECK_VEC(&c, vec_make(0, -1, 0), pl->plane.point, 0.0, "plane point");
+  CHECK_VEC(&c, vec_make(0, 1, 0), pl->plane.normal, 0.0, "plane normal 0 2 0, normalised");
   CHECK_INT(&c, 1, pl->material, "the plane's material, floor: index 1");
 
   const Light *pt = &s.lights[0], *dir = &s.lights[1], *area = &s.lights[2];

@@ -168,7 +168,7 @@ static void setup(Setup *s, Material m, const Light *lights, int n_lights)
     cr_assert(scene_add_light(&s->scene, &lights[k]), "out of memory");
   cr_assert(scene_prepare(&s->scene, SCENE_CAMERA | SCENE_LIGHTS), "out of memory");
   s->floor = plane_make(vec_make(0, 0, 0), vec_make(0, 1, 0));
-  s->inst = (Instance){.shape = SHAPE_PLANE, .material = 0, .light = -1, .plane = &s->floor};
+  s->inst = (Instance){.shape = SHAPE_PLANE, .material = 0, .light = -1, .plane = s->floor};
   s->hit = floor_hit(&s->inst);
   s->set = (RenderSettings){.threads = 1, .seed = 1};
   s->ctx = (RenderCtx){.set = &s->set};

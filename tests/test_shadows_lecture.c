@@ -17,8 +17,8 @@ static int line_roots(const Instance *in, const long double o[3], const long dou
   if (in->shape == SHAPE_PLANE) {
     long double dn = 0.0L, qn = 0.0L;
     for (int a = 0; a < 3; a++) {
-      dn += d[a] * in->plane->normal.raw[a];
-      qn += ((long double)in->plane->point.raw[a] - o[a]) * in->plane->normal.raw[a];
+      dn += d[a] * in->plane.normal.raw[a];
+      qn += ((long double)in->plane.point.raw[a] - o[a]) * in->plane.normal.raw[a];
     }
     if (dn == 0.0L)
       return 0;

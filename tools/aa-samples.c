@@ -102,6 +102,7 @@ int main(int argc, char **argv)
   printf("aa-samples: %s %dx%d: %.2f samples per pixel on average, at most %u\n", argv[5],
          film_w, film_h, (double)st.samples / (film_w * film_h), top);
   film_free(&film);
+  accel_free(&scene);
   scene_free(&scene);
   free(seen);
   free(counts);

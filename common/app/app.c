@@ -178,6 +178,7 @@ int app_run(int argc, char **argv, const Step *step)
                         .progress = !o.quiet};
   if (o.trace_x >= 0) {
     int status = run_trace(argc, argv, step, &o, &scene, &set);
+    pack_index_free(&scene);
     scene_free(&scene);
     return status;
   }
@@ -192,6 +193,7 @@ int app_run(int argc, char **argv, const Step *step)
       status = 0;
     film_free(&film);
   }
+  pack_index_free(&scene);
   scene_free(&scene);
   return status;
 }

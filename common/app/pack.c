@@ -1,6 +1,6 @@
 /* The program without the speed pack (make FAST=0): the film as film_init
  * makes it; no index, so every query tests every instance in order; every
- * shadow ray traced; every scene read and parsed in one pass; every PNG
+ * scene read and parsed word by word; every PNG
  * written by image.c's libpng rows. */
 #include "app/pack.h"
 
@@ -11,34 +11,21 @@ bool pack_film_init(Film *film, int width, int height)
 
 bool pack_index(Scene *scene)
 {
-  (void)scene;
+  scene->index = NULL;
   return true;
 }
 
-int pack_light_view(const Scene *scene, const Hit *hit, const Quad *q,
-                    const RenderSettings *set, PackView *view)
+void pack_index_free(Scene *scene)
 {
-  (void)hit;
-  (void)q;
-  (void)set;
-  view->scene = *scene;
-  return scene->light_samples;
+  scene->index = NULL;
 }
 
-bool pack_parse(const char *file, const char *text, size_t len, Scene *scene, bool *ok)
+bool pack_sphere_line(const char *text, const char *end, PackSphereLine *out)
 {
-  (void)file;
   (void)text;
-  (void)len;
-  (void)scene;
-  (void)ok;
+  (void)end;
+  (void)out;
   return false;
-}
-
-bool pack_lines(struct Parser *p)
-{
-  (void)p;
-  return true;
 }
 
 bool pack_map(int fd, size_t size, char **text)

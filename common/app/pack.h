@@ -9,7 +9,6 @@
 #include <stdbool.h>
 #include <stddef.h>
 #include <stdio.h>
-#include "app/render.h"
 #include "film.h"
 #include "scene.h"
 
@@ -17,41 +16,33 @@
  * freed by film_free; its pixels where they cost least to write. */
 bool pack_film_init(Film *film, int width, int height);
 
-/* Build scene->index, which chooses the instances each query tests, or
- * leave it NULL: the queries then test every instance in order. Call after
- * scene_prepare. False (one line printed) when out of memory. */
+/* Point scene->index at the query table of an index built over its
+ * instances, which chooses the instances each query tests (shadow rays
+ * toward an area light included: docs/performance.md), or leave it NULL:
+ * the queries then test every instance in order. Call after scene_prepare;
+ * the index is the pack's until pack_index_free. False (one line printed)
+ * when out of memory. */
 bool pack_index(Scene *scene);
 
-enum { PACK_VIEW_MAX = 8 };
+/* Free the index pack_index built for scene and set scene->index to NULL;
+ * harmless when there is none. Before scene_free. */
+void pack_index_free(Scene *scene);
 
-/* A scene as one point's shadow rays toward one area light see it. */
-typedef struct PackView {
-  Scene scene;          /* what the point's light samples are shaded in */
-  SceneIndex index;     /* scene.index when narrowed: `any` over ids only */
-  const Scene *whole;   /* the scene viewed: its index answers `closest` */
-  int n;
-  int ids[PACK_VIEW_MAX];
-} PackView;
+/* A line `sphere center X Y Z radius R material NAME` as the pack reads it
+ * straight from the text: one space between words, plain decimals. */
+typedef struct PackSphereLine {
+  float v[4];         /* X, Y, Z and R, as the scene format's numbers read them */
+  const char *name;   /* NAME: name_len bytes, up to the line's end */
+  int name_len;
+  int longest;        /* the length of its longest number or name */
+  const char *next;   /* where the next line starts (or the text's end) */
+} PackSphereLine;
 
-/* Fill view->scene for the shadow rays ray_spawn(hit, l) toward the front
- * side of the area light q: the scene itself, or a copy whose shadow
- * queries test only the lit shapes that may stand between them (none at
- * all when none can); scene_occluded answers there exactly as on `scene`
- * for those rays. Returns how many of scene->light_samples the point takes. */
-int pack_light_view(const Scene *scene, const Hit *hit, const Quad *q,
-                    const RenderSettings *set, PackView *view);
-
-/* Parse a large scene text as parser_load_text does (the same scene, the
- * same messages), faster: true when the pack took the text, *ok then the
- * verdict; false (nothing done) to leave it to parser_load_whole. */
-bool pack_parse(const char *file, const char *text, size_t len, Scene *scene, bool *ok);
-
-struct Parser;
-
-/* Read the lines that follow in p's text itself where it can, faster than
- * parser_statements and as it would (the same shapes, any line of doubt
- * left to it); false when out of memory. */
-bool pack_lines(struct Parser *p);
+/* Read the line at text[0 .. end - text) when it is such a line: true, *out
+ * filled; false for any other line and for any doubt (the general parser
+ * then reads it). The parser checks the values and the name as it checks its
+ * own. */
+bool pack_sphere_line(const char *text, const char *end, PackSphereLine *out);
 
 /* Map the `size` bytes of the regular file open at fd read-only: true, the
  * text at *text (nothing after its last byte); false to read it instead.

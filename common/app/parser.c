@@ -7,7 +7,6 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "app/pack.h"
 #include "app/textfile.h"
 
 bool parser_load_whole(const char *file, const char *text, size_t len, Scene *scene)
@@ -30,9 +29,6 @@ bool parser_load_text(const char *file, const char *text, size_t len, Scene *sce
     scene_free(scene);
     return false;
   }
-  bool ok;
-  if (pack_parse(file, text, len, scene, &ok)) /* a large text, in parallel pieces */
-    return ok;
   return parser_load_whole(file, text, len, scene);
 }
 

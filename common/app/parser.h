@@ -15,8 +15,7 @@
  * error prints one line to stderr, frees what was built and returns false. */
 bool parser_load_text(const char *file, const char *text, size_t len, Scene *scene);
 
-/* parser_load_text in one pass over the text, whatever its size (the large
- * scene reader of the speed pack, app/pack.h, falls back on it). */
+/* parser_load_text without its check of the text's size. */
 bool parser_load_whole(const char *file, const char *text, size_t len, Scene *scene);
 
 /* The same for a NUL-terminated string. */

@@ -176,46 +176,6 @@ bool parser_pending_add(Parser *p, int instance, int line, int col, const char *
   return true;
 }
 
-bool parser_pending_merge(Parser *p, const Parser *q, int first_instance)
-{
-  /* found[k]: the material q's name k names, when p has it by now (it is
-   * the one it names at the end: a material is defined once); map[k]: the
-   * name in p's forward table otherwise */
-  int *map = malloc(((size_t)q->n_forward + 1) * sizeof *map);
-  int *found = malloc(((size_t)q->n_forward + 1) * sizeof *found);
-  bool ok = map && found;
-  for (int k = 0; ok && k < q->n_forward; k++) {
-    const char *name = q->forward[k].name;
-    int len = (int)strlen(name);
-    found[k] = names_find(&p->names, materials(p), name, len);
-    ok = found[k] >= 0 || (map[k] = forward_name(p, name, len)) >= 0;
-  }
-  int left = 0;
-  for (int k = 0; ok && k < q->n_pending; k++)
-    left += found[q->pending[k].name] < 0;
-  ok = ok && pending_reserve(p, left);
-  if (ok) {
-    Pending *to = p->pending + p->n_pending;
-    Instance *inst = p->scene->instances + first_instance;
-    for (int k = 0; k < q->n_pending; k++) {
-      Pending r = q->pending[k];
-      if (found[r.name] >= 0) {
-        inst[r.instance].material = found[r.name];
-      } else {
-        r.instance += first_instance;
-        r.name = map[r.name];
-        *to++ = r;
-      }
-    }
-    p->n_pending += left;
-  }
-  if (!map || !found)
-    fprintf(stderr, "parser: out of memory\n");
-  free(map);
-  free(found);
-  return ok;
-}
-
 bool parser_place_shape(Parser *p, Instance *inst, const Token *name)
 {
   Scene *s = p->scene;
@@ -225,13 +185,7 @@ bool parser_place_shape(Parser *p, Instance *inst, const Token *name)
     if (!parser_pending_add(p, s->n_instances, p->lx.line, name->col, name->s, name->len))
       return false;
   }
-  if (p->room == 0)
-    return scene_add_instance(s, inst);
-  if (s->n_instances == p->room)
-    return false;
-  s->instances[s->n_instances++] = *inst;
-  s->n_shapes = s->n_instances;
-  return true;
+  return scene_add_instance(s, inst);
 }
 
 /* place_shape, the material looked up by its name. */
@@ -260,9 +214,7 @@ static bool st_plane(Parser *p)
   if (!fields_read(&p->lx, "plane", keys, 3, f) || !limits_direction(&p->lx, &f[1], "normal"))
     return false;
   Plane plane = plane_make(f[0].v, f[1].v);
-  Instance inst = {.shape = SHAPE_PLANE, .plane = scene_add_plane(p->scene, &plane)};
-  if (!inst.plane)
-    return false;
+  Instance inst = {.shape = SHAPE_PLANE, .plane = plane};
   return add_shape(p, &inst, &p->lx.tok[f[2].val]);
 }
 
@@ -275,9 +227,7 @@ static bool st_disc(Parser *p)
       !limits_length(&p->lx, &f[2], "radius"))
     return false;
   Disc disc = disc_make(f[0].v, f[1].v, f[2].v.x);
-  Instance inst = {.shape = SHAPE_DISC, .disc = scene_keep(p->scene, &disc, sizeof disc)};
-  if (!inst.disc)
-    return false;
+  Instance inst = {.shape = SHAPE_DISC, .disc = disc};
   return add_shape(p, &inst, &p->lx.tok[f[3].val]);
 }
 
@@ -413,10 +363,68 @@ void parser_begin(Parser *p, const char *file, const char *text, size_t len, Sce
   lexer_init(&p->lx, file, text, len);
 }
 
+/* A material name found in a run of sphere lines, and its material. */
+typedef struct RecentName {
+  const char *name;
+  int len, material;
+} RecentName;
+
+enum { RECENT_NAMES = 8 };
+
+/* The material a sphere line names: one of the last RECENT_NAMES names
+ * found in this run of lines (a material's index never changes while a
+ * text is parsed), else names_find after lexer_name_valid; -2 when the name
+ * is not a valid one. */
+static int line_material(Parser *p, RecentName *recent, unsigned *n_recent,
+                         const PackSphereLine *sl)
+{
+  unsigned n = *n_recent < RECENT_NAMES ? *n_recent : RECENT_NAMES;
+  for (unsigned k = 0; k < n; k++)
+    if (recent[k].len == sl->name_len && memcmp(recent[k].name, sl->name, (size_t)sl->name_len) == 0)
+      return recent[k].material;
+  if (!lexer_name_valid(sl->name, sl->name_len, MATERIAL_NAME_MAX - 1))
+    return -2;
+  int material = names_find(&p->names, parser_materials(p->scene), sl->name, sl->name_len);
+  recent[(*n_recent)++ % RECENT_NAMES] = (RecentName){sl->name, sl->name_len, material};
+  return material;
+}
+
+/* The sphere lines that follow, as the speed pack reads them straight from
+ * the text (pack_sphere_line): each value checked as st_sphere's fields
+ * check it; the first line the pack declines, or any value in doubt, is
+ * left to the general path (lexer_line, statement), which reads it and says
+ * what is wrong. False when out of memory. */
+static bool sphere_lines(Parser *p)
+{
+  Lexer *lx = &p->lx;
+  PackSphereLine sl;
+  RecentName recent[RECENT_NAMES];
+  unsigned n_recent = 0;
+  while (pack_sphere_line(lx->next, lx->end, &sl)) {
+    if (sl.longest >= LEXER_TOKEN_MAX || !fields_coordinate_ok(sl.v[0]) ||
+        !fields_coordinate_ok(sl.v[1]) || !fields_coordinate_ok(sl.v[2]) ||
+        !limits_length_ok(sl.v[3]))
+      return true;
+    int material = line_material(p, recent, &n_recent, &sl);
+    if (material == -2)
+      return true;
+    Token tok = {sl.name, sl.name_len, (int)(sl.name - lx->next) + 1};
+    lx->line++;
+    lx->n = lx->pos = 0;
+    lx->next = sl.next;
+    Instance inst = {.shape = SHAPE_SPHERE,
+                     .sphere = {.center = {{sl.v[0], sl.v[1], sl.v[2]}}, .radius = sl.v[3]},
+                     .material = material};
+    if (!parser_place_shape(p, &inst, &tok))
+      return false;
+  }
+  return true;
+}
+
 bool parser_statements(Parser *p)
 {
   for (;;) {
-    if (!pack_lines(p)) /* the speed pack may read the lines that follow itself */
+    if (!sphere_lines(p))
       return false;
     int more = lexer_line(&p->lx);
     if (more == 0)

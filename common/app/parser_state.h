@@ -1,7 +1,6 @@
 /* The parser's state and statements (common/app/parser_state.c), for whole
- * texts (common/app/parser.c) and the pieces of a large one
- * (fast/reader/pieces.c).
- * Internal to the parser; docs/scene-format.md. */
+ * texts (common/app/parser.c). Internal to the parser;
+ * docs/scene-format.md. */
 #ifndef RT_PARSER_STATE_H
 #define RT_PARSER_STATE_H
 
@@ -16,8 +15,7 @@ enum { ONCE_FILM, ONCE_CAMERA, ONCE_AMBIENT, ONCE_BACKGROUND, ONCE_SAMPLES,
 
 /* A shape whose material was not defined yet where it was named: the name
  * is the parser's forward[name] (each such name is kept once, however many
- * shapes use it: in the second half of a 10^6-sphere scene parsed in two
- * pieces, every shape names a material its piece has not seen). */
+ * shapes use it). */
 typedef struct Pending {
   int instance, line, col, name;
 } Pending;
@@ -36,9 +34,6 @@ typedef struct Parser {
   int n_forward;
   Names forward_names;  /* name -> index into forward */
   int once_line[ONCE_COUNT]; /* where each once-statement was, 0: not yet */
-  int room; /* 0: shapes go to the scene's growing array; > 0: a piece of a
-             * large text (fast/reader/pieces.c), whose shapes go in place to
-             * scene->instances[0 .. room), an array it does not own */
 } Parser;
 
 /* The scene's materials as records of the names table. */
@@ -57,16 +52,9 @@ bool parser_statements(Parser *p);
  * memory. */
 bool parser_pending_add(Parser *p, int instance, int line, int col, const char *name, int len);
 
-/* q's references, their instances moved by `first_instance` (q's shapes
- * appended after p's, and q's materials added to p's): those to a material p
- * has are resolved now, the others appended after p's; false when out of
- * memory. */
-bool parser_pending_merge(Parser *p, const Parser *q, int first_instance);
-
 /* Add a lit instance whose material, the name token `name`, is
- * inst->material (-1: not defined yet, resolved at the end). A piece writes
- * in place, and fails (silently: the whole text is then parsed again) should
- * it find more shapes than its room, one a line. */
+ * inst->material (-1: not defined yet, resolved at the end); false when out
+ * of memory. */
 bool parser_place_shape(Parser *p, Instance *inst, const Token *name);
 
 /* The statement table (parser_state.c's STATEMENTS), in the order messages

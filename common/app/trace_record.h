@@ -22,7 +22,7 @@ typedef struct Trace Trace;
  * scene's own index, or NULL for scene.c's plain loop): same answers. */
 typedef struct TraceIndex {
   SceneIndex base;     /* first member: Trace.scene.index points here */
-  SceneIndex *inner;
+  const SceneIndex *inner;
   struct Trace *trace;
 } TraceIndex;
 

@@ -9,29 +9,28 @@
 
 #include "scene.h"
 
-/* Build scene->index (replacing any). The environment variable RT_ACCEL
+/* Point scene->index at a new index's query table (freeing the one
+ * accel_build made before, if any). The environment variable RT_ACCEL
  * chooses the layout for measurements: "loop" (no index: scene.c's plain loop
  * over the instances), "flat" (the spheres in one leaf, behind one bounding
  * box, no cones), "bvh" (always a hierarchy); unset, the hierarchy is built
  * from ACCEL_FLAT_MAX + 1 spheres on, and up to ACCEL_FLAT_MAX the one leaf
- * with the cones. Answers are identical whatever the layout.
+ * with the cones. With more than 4 light samples, the any-hit query
+ * recognises the shadow rays toward an area light by their end and tests
+ * only the shapes that may stand between their origin and the light
+ * (index/hull.c). Answers are identical whatever the layout.
  * False (one line printed) when out of memory. */
 bool accel_build(Scene *scene);
 
+/* Free the index accel_build made for scene; scene->index becomes NULL. */
+void accel_free(Scene *scene);
+
 enum { ACCEL_FLAT_MAX = 16 };
 
-/* True when no lit shape can stop a shadow ray ray_spawn(hit, l) toward any
- * point of the parallelogram q on the front side of hit->n: scene_occluded
- * would then answer false for every one of them. A conservative test of the
- * shapes against the hull of hit->p and q (fast/index/hull.c), through the
- * hierarchy's boxes when there is one; false when unsure. */
-bool accel_quad_unoccluded(const Scene *scene, const Hit *hit, const Quad *q);
-
-/* The lit shapes that may stop such a shadow ray (the same test, shape by
- * shape): their instance indices in ids[0 .. count-1] and their count, or -1
- * when more than `max` may (ids then holds some of them). Every other lit
- * shape lets every such ray pass: scene_occluded over ids alone answers as
- * over the whole scene. */
-int accel_quad_occluders(const Scene *scene, const Hit *hit, const Quad *q, int *ids, int max);
+/* The lit shapes that may stop a ray from o to a point of the quad q, as
+ * the any-hit query finds them for the shadow rays toward an area light:
+ * their count (instance indices in ids), or -1 when more than max may. For
+ * the tests; scene->index must be accel_build's. */
+int accel_area_shapes(const Scene *scene, vec3s o, const Quad *q, int *ids, int max);
 
 #endif

@@ -264,7 +264,7 @@ void cones_free(Cones *c)
   free(c);
 }
 
-Cones *cones_build(const Scene *scene, const int *ids, int n)
+Cones *cones_build(const Scene *scene, const int *ids, const Sphere *bounds, int n)
 {
   if (n < 1 || n > CONES_MAX)
     return NULL;
@@ -276,7 +276,7 @@ Cones *cones_build(const Scene *scene, const int *ids, int n)
   memset(c, 0, size);
   Ball b[CONES_MAX];
   for (int k = 0; k < n; k++) {
-    const Sphere *s = &scene->instances[ids[k]].sphere;
+    const Sphere *s = &bounds[k];
     for (int i = 0; i < 3; i++)
       b[k].c[i] = s->center.raw[i];
     b[k].r = (double)s->radius + 2.0 * sphere_pad(s);

@@ -24,12 +24,13 @@ static inline float sphere_pad(const Sphere *s)
   return 0x1p-16f * s->radius + 0x1p-20f * (vec_max_abs(s->center) + s->radius);
 }
 
-/* The cones of the lit spheres ids[0 .. n), 1 <= n <= CONES_MAX, listed in
- * increasing instance order, for scene->camera's eye and the scene's point
- * and directional lights; NULL when none could be built (the caller then
- * goes without). */
+/* The cones of the lit shapes ids[0 .. n), 1 <= n <= CONES_MAX, listed in
+ * increasing instance order, each within the sphere bounds[k] (a sphere
+ * itself, another shape the ball around its box), for scene->camera's eye
+ * and the scene's point and directional lights; NULL when none could be
+ * built (the caller then goes without). */
 enum { CONES_MAX = 16 };
-Cones *cones_build(const Scene *scene, const int *ids, int n);
+Cones *cones_build(const Scene *scene, const int *ids, const Sphere *bounds, int n);
 void cones_free(Cones *c);
 
 /* The instance indices given to cones_build, in its order. */

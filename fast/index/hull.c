@@ -53,9 +53,9 @@ static void add_dir(ShadowHull *h, vec3s u, vec3s inside)
   h->reach[h->n_dirs++] = hull_reach(h, u);
 }
 
-ShadowHull hull_make(const Hit *hit, const Quad *q)
+ShadowHull hull_make(vec3s o, const Quad *q)
 {
-  ShadowHull h = {.p = hit->p, .o = ray_spawn(hit, hit->n).o};
+  ShadowHull h = {.p = o, .o = o};
   hull_quad(&h, q);
   float scale = fmaxf(vec_max_abs(h.p), vec_max_abs(h.o)), far = 0.0f;
   h.lo = h.hi = h.p;
@@ -69,10 +69,15 @@ ShadowHull hull_make(const Hit *hit, const Quad *q)
     h.hi = glms_vec3_maxv(h.hi, c);
   }
   /* Rounding moves a shadow ray off the exact hull by a few ulps of these
-   * lengths (sample point, direction, the push off the surface); 2^-14 of
-   * them is far above that and still invisible geometrically. */
-  h.margin = 0x1p-14f * (scale + far) + 2.0f * vec_sum_abs(glms_vec3_sub(h.o, h.p));
-  h.lean = 0x1p-18 * ((double)far + q->area + vec_max_abs(q->corner) +
+   * lengths (sample point, direction from the shaded point rather than from
+   * the origin pushed off it, the ray's end short of the light:
+   * accel.c's toward_area); 2^-14 of them is far above that and still
+   * invisible geometrically. */
+  h.margin = 0x1p-14f * (scale + far);
+  /* The ray's end may stray from the quad by what accel.c's toward_area
+   * admits (2^-19 of the quad's size and of the ray's length, at most 3 far
+   * per axis): lean covers it along f, with as much again for rounding. */
+  h.lean = 0x1p-15 * ((double)far + q->area + vec_max_abs(q->corner) +
                       vec_max_abs(q->edge1) + vec_max_abs(q->edge2) + scale);
   /* The four sides through p and an edge, outward (away from the light's
    * centre), then the light's plane and the plane through p parallel to it. */
@@ -142,15 +147,16 @@ bool hull_may_meet_box(const ShadowHull *h, const float lo[3], const float hi[3]
 /* Axis-aligned plane x[a] = Q: plane_hit_t's t is (Q - o[a]) / d[a] up to
  * exact zeros and the normal's sign, so it is positive only when d[a] points
  * from o toward the plane, and sign(d[a]) = sign(x[a] - p[a]) for the sample
- * x (a positive scaling). Exact: no margin beyond the samples' rounding. */
+ * x and the shaded point p (a positive scaling), which lies within a rounding
+ * of o: the margin covers it. */
 static bool axis_plane_may_meet(const ShadowHull *h, const Plane *pl)
 {
   int a = pl->axis;
-  float q = pl->point.raw[a], o = h->o.raw[a], p = h->p.raw[a];
+  float q = pl->point.raw[a], o = h->o.raw[a];
   if (o > q)
-    return !(h->quad_lo[a] > p);
+    return !(h->quad_lo[a] > (double)o + h->margin);
   if (o < q)
-    return !(h->quad_hi[a] < p);
+    return !(h->quad_hi[a] < (double)o - h->margin);
   return false; /* o on the plane: t = 0 / d[a], never positive */
 }
 

@@ -1,7 +1,7 @@
-/* Shadow volume of an area light: the convex hull of a shaded point and the
- * light's parallelogram, with conservative tests of shapes against it, so that
- * a point no shape can shadow skips its shadow rays (step 08,
- * docs/08-area-lights.md and docs/performance.md). */
+/* Shadow volume of an area light: the convex hull of a shadow ray's origin
+ * and the light's parallelogram, with conservative tests of shapes against
+ * it, so that the shadow rays of a point toward the light test only the
+ * shapes that can stop them (step 08, docs/performance.md). */
 #ifndef RT_HULL_H
 #define RT_HULL_H
 
@@ -10,9 +10,9 @@
 
 enum { HULL_DIRS = 6 };
 
-/* Everything the shadow rays spawned at a hit toward the quad can reach. */
+/* Everything the shadow rays from one origin toward the quad can reach. */
 typedef struct ShadowHull {
-  vec3s p, o;               /* shaded point, the rays' origin (ray_spawn) */
+  vec3s p, o;               /* the rays' origin (the hull's apex), twice */
   double corner[4][3];      /* the quad's corners, exact, in order around it */
   vec3s lo, hi;             /* box of p, o and the corners */
   vec3s dir[HULL_DIRS];     /* directions (unit) ... */
@@ -23,9 +23,11 @@ typedef struct ShadowHull {
   double quad_lo[3], quad_hi[3]; /* lowest / highest sample coordinate */
 } ShadowHull;
 
-/* The hull of the hit point and the quad, for the rays ray_spawn(hit, l) that
- * go to the front side of hit->n. */
-ShadowHull hull_make(const Hit *hit, const Quad *q);
+/* The hull of o and the quad, for the rays from o that end on the quad,
+ * or within 2^-18 of the coordinates' size of it (the sample points as the
+ * shading rounds them, the shadow rays' tmax short of them), as rays
+ * spawned at a shaded point within a rounding of o compute them. */
+ShadowHull hull_make(vec3s o, const Quad *q);
 
 /* False only when no such ray can hit the sphere, as sphere_hit_t computes
  * it: the sphere is clear of the hull by a margin far above rounding, or every

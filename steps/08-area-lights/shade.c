@@ -3,14 +3,13 @@
  * they make soft shadows. docs/08-area-lights.md. */
 #include "shade.h"
 
-#include "app/pack.h"
 #include "app/trace.h"
 #include "rng.h"
 #include "sampler.h"
 
 bool shade_visible(const Scene *scene, const Hit *hit, vec3s l, float dist, RenderCtx *ctx)
 {
-  ctx->rays += !scene->no_occluders; /* a shadow ray, unless none is needed */
+  ctx->rays++; /* a shadow ray */
   /* BEGIN SOLUTION step 05 */
   /* The lecture traces a closest-hit ray and checks that it reaches the light.
    * Any occluder closer than the light will do, so ask the cheaper any-hit
@@ -108,20 +107,15 @@ vec3s shade_area(const Scene *scene, int light_index, const Hit *hit, vec3s v, i
       c = glms_vec3_add(c, shade_phong_light(m, hit, v, li, l));
   }
   /* END SOLUTION */
-  return trace_area(ctx, light_index, scene->no_occluders, c);
+  return trace_area(ctx, light_index, false, c);
 }
 
 /* One light's term at the hit point seen from the direction v. */
 static vec3s shade_light(const Scene *scene, int k, const Hit *hit, vec3s v, RenderCtx *ctx)
 {
   const Light *light = &scene->lights[k];
-  if (light->type == LIGHT_AREA) {
-    /* The samples are shaded in the scene as the speed pack narrows it for
-     * this point and light (app/pack.h); without the pack, the scene itself. */
-    PackView view;
-    int n = pack_light_view(scene, hit, &light->quad, ctx->set, &view);
-    return shade_area(&view.scene, k, hit, v, n, ctx);
-  }
+  if (light->type == LIGHT_AREA)
+    return shade_area(scene, k, hit, v, scene->light_samples, ctx);
   vec3s l;
   vec3s li = shade_incident(scene, &scene->lights[k], hit, &l, ctx);
   return shade_phong_light(&scene->materials[hit->inst->material], hit, v, li, l);

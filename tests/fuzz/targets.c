@@ -15,7 +15,7 @@
 #include "app/image.h"
 #include "app/parser.h"
 #include "app/parser_state.h"
-#include "reader/pieces.h"
+#include "reader/sphere_line.h"
 #include "sampler.h"
 
 static Step step08;
@@ -48,7 +48,7 @@ static void bug(const char *what)
 /* The index must answer as the plain loop over the instances does. */
 static void same_answers(Scene *s, Ray r)
 {
-  SceneIndex *index = s->index;
+  const SceneIndex *index = s->index;
   Hit a, b;
   bool ha = scene_intersect(s, r, INFINITY, &a), oa = scene_occluded(s, r, 1e30f);
   s->index = NULL;
@@ -68,29 +68,29 @@ static void same_answers(Scene *s, Ray r)
   }
 }
 
-/* The text parsed in 2 or 3 pieces at once (what a large file gets) must
- * give what the whole parse gave: the same verdict and the same shapes, each
- * with its material (forward references resolved across pieces), and a
- * valid text must come from its pieces, not from parsing it again whole. */
-static void same_in_pieces(const uint8_t *data, size_t size, bool ok, const Scene *whole)
+/* The text parsed by the general path alone (the speed pack's sphere lines
+ * off) must give what the parse with them gave: the same verdict and the
+ * same shapes, each with its material. */
+static void same_without_sphere_lines(const uint8_t *data, size_t size, bool ok,
+                                      const Scene *fast)
 {
   Scene p;
   scene_init(&p);
-  int reparses = pieces_reparses;
-  bool ok_p = pieces_load("fuzz.scene", (const char *)data, size, &p, 2 + (int)(size % 2));
+  sphere_line_on = false;
+  bool ok_p = parser_load_text("fuzz.scene", (const char *)data, size, &p);
+  sphere_line_on = true;
   if (ok_p != ok)
-    bug("the parse in pieces and the whole parse disagree on the text's validity");
+    bug("the pack's sphere lines and the general path disagree on the text's validity");
   if (!ok)
     return;
-  if (pieces_reparses != reparses)
-    bug("a valid text's pieces failed, and it was parsed again whole (a piece's room?)");
-  if (p.n_instances != whole->n_instances || p.n_shapes != whole->n_shapes ||
-      p.n_materials != whole->n_materials || p.n_lights != whole->n_lights)
-    bug("the parse in pieces counts other shapes, materials or lights");
+  if (p.n_instances != fast->n_instances || p.n_shapes != fast->n_shapes ||
+      p.n_materials != fast->n_materials || p.n_lights != fast->n_lights)
+    bug("the pack's sphere lines count other shapes, materials or lights");
   for (int k = 0; k < p.n_instances; k++)
-    if (p.instances[k].shape != whole->instances[k].shape ||
-        p.instances[k].material != whole->instances[k].material)
-      bug("the parse in pieces gives a shape another shape or material");
+    if (p.instances[k].shape != fast->instances[k].shape ||
+        p.instances[k].material != fast->instances[k].material ||
+        memcmp(&p.instances[k].sphere, &fast->instances[k].sphere, sizeof p.instances[k].sphere))
+      bug("the pack's sphere lines give a shape another shape, place or material");
   scene_free(&p);
 }
 
@@ -101,13 +101,14 @@ void fuzz_scene(const uint8_t *data, size_t size)
   Scene s;
   scene_init(&s);
   bool ok = parser_load_text("fuzz.scene", (const char *)data, size, &s);
-  same_in_pieces(data, size, ok, &s);
+  same_without_sphere_lines(data, size, ok, &s);
   if (!ok)
     return;
   if (scene_prepare(&s, step08_get()->features) && accel_build(&s)) {
     for (int k = 0; k < 25; k++)
       same_answers(&s, camera_ray(&s.camera, (float)(k % 5) / 4.0f, (float)(k / 5) / 4.0f));
   }
+  accel_free(&s);
   scene_free(&s);
 }
 
@@ -170,5 +171,6 @@ void fuzz_render(const uint8_t *data, size_t size)
     check_film(&film);
     film_free(&film);
   }
+  accel_free(&s);
   scene_free(&s);
 }

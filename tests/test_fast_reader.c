@@ -1,6 +1,7 @@
-/* The parse of a large scene in pieces at once (fast/reader/pieces.c)
- * against the one-piece parse: the same scene, or the same message, for
- * every scene file of the repository. docs/reliability.md, "Large scenes". */
+/* The large scene's fast reading (the speed pack's sphere lines,
+ * fast/reader/sphere_line.c, and a mapped file) against the general path:
+ * the same scene, or the same message. docs/reliability.md, "Large
+ * scenes". */
 #define _DEFAULT_SOURCE /* mkstemp */
 #include "capture.h"
 #include "check.h"
@@ -12,7 +13,6 @@
 
 #include "app/parser.h"
 #include "app/parser_state.h"
-#include "reader/pieces.h"
 #include "reader/sphere_line.h"
 #include "same_instance.h"
 
@@ -49,15 +49,14 @@ static bool same_parse(bool ok_a, const char *err_a, const Scene *a, bool ok_b,
   return ok_a == ok_b && strcmp(err_a, err_b) == 0 && (!ok_a || same_scene(a, b));
 }
 
-/* What pieces_load prints and builds for `text` in `chunks` pieces. */
-static bool parse_in_pieces(const char *text, size_t len, int chunks, Scene *s, char *err,
-                            size_t size)
+/* What parser_load_text prints and builds for `text`. */
+static bool parse_captured_text(const char *text, size_t len, Scene *s, char *err, size_t size)
 {
   FILE *tmp = tmpfile();
   cr_assert(tmp);
   capture_begin(tmp);
   scene_init(s);
-  bool ok = pieces_load("t.scene", text, len, s, chunks);
+  bool ok = parser_load_text("t.scene", text, len, s);
   capture_end();
   rewind(tmp);
   err[fread(err, 1, size - 1, tmp)] = '\0';
@@ -65,193 +64,7 @@ static bool parse_in_pieces(const char *text, size_t len, int chunks, Scene *s, 
   return ok;
 }
 
-/* Every scene of scenes/ and tests/bad/scenes/ parsed whole and in 2 to 9
- * pieces (cut at lines, so that a second `film`, a material defined twice or
- * used before its definition often fall in two pieces): the same scene, or
- * the same message. */
-Test(parse_pieces, pieces_in_parallel_parse_as_the_whole)
-{
-  static const char *const dirs[] = {"scenes", "tests/bad/scenes"};
-  Check c = CHECK("pieces_load", "docs/reliability.md, \"Large scenes\"");
-  for (int d = 0; d < 2; d++) {
-    DIR *dir = opendir(dirs[d]);
-    cr_assert(dir, "no %s", dirs[d]);
-    for (struct dirent *e; (e = readdir(dir));) {
-      if (!strstr(e->d_name, ".scene"))
-        continue;
-      char path[300], whole_err[512], piece_err[512];
-      snprintf(path, sizeof path, "%s/%.256s", dirs[d], e->d_name);
-      FILE *f = fopen(path, "rb");
-      cr_assert(f);
-      static char text[1 << 16];
-      size_t len = fread(text, 1, sizeof text, f);
-      fclose(f);
-      Scene whole, pieces;
-      bool ok = parse_in_pieces(text, len, 1, &whole, whole_err, sizeof whole_err);
-      for (int chunks = 2; chunks <= 9; chunks++) {
-        int reparses = pieces_reparses;
-        bool ok_p = parse_in_pieces(text, len, chunks, &pieces, piece_err, sizeof piece_err);
-        CHECK_THAT(&c, same_parse(ok, whole_err, &whole, ok_p, piece_err, &pieces),
-                   "%.100s in %d pieces: expected %s%.200s, got %s%.200s", path, chunks,
-                   ok ? "the whole parse's scene" : "the whole parse's error: ", whole_err,
-                   ok_p ? (ok ? "a different scene" : "a scene") : "", piece_err);
-        CHECK_THAT(&c, !ok || pieces_reparses == reparses,
-                   "%.100s in %d pieces: a valid scene, expected the pieces to parse it "
-                   "(pieces_reparses unchanged), got it parsed again whole", path, chunks);
-        scene_free(&pieces);
-      }
-      scene_free(&whole);
-    }
-    closedir(dir);
-  }
-  CHECK_DONE(&c);
-}
-
-/* Shapes that name materials defined only further down, so that in every
- * piece but the last the names are forward references (each piece keeps each
- * name once, docs/reliability.md, "Large scenes"), and, when `undefined`, one
- * name that is never defined: the same scene, or the same message, in 2 to 9
- * pieces as whole. */
-static void forward_references(Check *c, bool undefined)
-{
-  static char text[1 << 16];
-  size_t len = 0;
-  len += (size_t)snprintf(text + len, sizeof text - len, "film 8 6\n");
-  for (int k = 0; k < 600; k++)
-    len += (size_t)snprintf(text + len, sizeof text - len,
-                            "sphere center %d 0 -5 radius 0.5 material m%d\n", k, k % 7);
-  if (undefined)
-    len += (size_t)snprintf(text + len, sizeof text - len,
-                            "sphere center 0 1 -5 radius 0.5 material nowhere\n");
-  for (int k = 0; k < 7; k++)
-    len += (size_t)snprintf(text + len, sizeof text - len, "material m%d diffuse 0.%d 0.5 0.5\n",
-                            k, k + 1);
-  char whole_err[512], piece_err[512];
-  Scene whole, pieces;
-  bool ok = parse_in_pieces(text, len, 1, &whole, whole_err, sizeof whole_err);
-  CHECK_THAT(c, ok == !undefined && (undefined || whole.n_instances == 600),
-             "forward references%s, whole: expected %s, got %s%.200s",
-             undefined ? " and an undefined name" : "", undefined ? "an error" : "600 shapes",
-             ok ? "a scene" : "", whole_err);
-  for (int k = 0; ok && k < whole.n_instances; k++)
-    CHECK_THAT(c, whole.instances[k].material == k % 7,
-               "forward references, whole: shape %d: expected material %d, got %d", k, k % 7,
-               whole.instances[k].material);
-  for (int chunks = 2; chunks <= 9; chunks++) {
-    int reparses = pieces_reparses;
-    bool ok_p = parse_in_pieces(text, len, chunks, &pieces, piece_err, sizeof piece_err);
-    CHECK_THAT(c, same_parse(ok, whole_err, &whole, ok_p, piece_err, &pieces),
-               "forward references in %d pieces: expected %s%.200s, got %s%.200s", chunks,
-               ok ? "the whole parse's scene" : "the whole parse's error: ", whole_err,
-               ok_p ? (ok ? "a different scene" : "a scene") : "", piece_err);
-    CHECK_THAT(c, !ok || pieces_reparses == reparses,
-               "forward references in %d pieces: a valid scene, expected the pieces to "
-               "parse it, got it parsed again whole", chunks);
-    if (ok_p)
-      scene_free(&pieces);
-  }
-  if (ok)
-    scene_free(&whole);
-}
-
-Test(parse_pieces, forward_references_resolve_as_in_the_whole)
-{
-  Check c = CHECK("pieces_load", "docs/reliability.md, \"Large scenes\"");
-  forward_references(&c, false);
-  forward_references(&c, true);
-  CHECK_DONE(&c);
-}
-
-/* Every piece writes its shapes in place, in room for one a line
- * (docs/reliability.md, "Large scenes"), the last line counted even without a
- * newline: a text of shapes only, its last line a shape with no newline,
- * parses in 2 to 9 pieces as whole, and never again whole. */
-Test(parse_pieces, shapes_fit_their_pieces_room)
-{
-  Check c = CHECK("pieces_load", "docs/reliability.md, \"Large scenes\"");
-  static char text[1 << 16];
-  size_t len = (size_t)snprintf(text, sizeof text, "material m diffuse 1 1 1\n");
-  for (int k = 0; k < 400; k++)
-    len += (size_t)snprintf(text + len, sizeof text - len, "%ssphere center %d 0 -5 radius 0.5 "
-                            "material m", k ? "\n" : "", k);
-  char whole_err[512], piece_err[512];
-  Scene whole, pieces;
-  cr_assert(parse_in_pieces(text, len, 1, &whole, whole_err, sizeof whole_err), "%s", whole_err);
-  for (int chunks = 2; chunks <= 9; chunks++) {
-    int reparses = pieces_reparses;
-    bool ok_p = parse_in_pieces(text, len, chunks, &pieces, piece_err, sizeof piece_err);
-    CHECK_THAT(&c, ok_p && same_scene(&whole, &pieces) && pieces_reparses == reparses,
-               "400 shapes, the last line without a newline, in %d pieces: expected the "
-               "whole parse's scene from the pieces, got %s%s", chunks,
-               !ok_p ? "an error" : same_scene(&whole, &pieces) ? "it" : "another scene",
-               pieces_reparses == reparses ? "" : " only from parsing again whole");
-    if (ok_p)
-      scene_free(&pieces);
-  }
-  scene_free(&whole);
-  CHECK_DONE(&c);
-}
-
-/* A header (the lines before the first sphere) and 3000 spheres in 2 to 9
- * pieces, as whole, and never again whole. When the spheres name only the
- * header's materials, each piece, given them (docs/reliability.md, "Large
- * scenes"), leaves no reference pending; when pieces define materials of their
- * own, used by later spheres, those keep their place after the header's. */
-static void header_and_spheres(Check *c, bool own_materials)
-{
-  static char text[1 << 18];
-  size_t len = (size_t)snprintf(text, sizeof text,
-                                "film 8 6\nmaterial a diffuse 0.5 0.5 0.5\n"
-                                "material b diffuse 0.1 0.2 0.3\n"
-                                "plane point 0 -1 0 normal 0 1 0 material b\n");
-  for (int k = 0; k < 3000; k++) {
-    if (own_materials && k % 700 == 350)
-      len += (size_t)snprintf(text + len, sizeof text - len, "material m%d diffuse 0.%d 0 0\n",
-                              k, k % 9 + 1);
-    const char *name = k % 2 ? "a" : "b";
-    char own[16];
-    if (own_materials && k % 3 == 0 && k > 350) {
-      snprintf(own, sizeof own, "m%d", (k - 350) / 700 * 700 + 350);
-      name = own;
-    }
-    len += (size_t)snprintf(text + len, sizeof text - len,
-                            "sphere center %d 0 -5 radius 0.5 material %s\n", k, name);
-  }
-  cr_assert(len < sizeof text - 1);
-  char whole_err[512], piece_err[512];
-  Scene whole, pieces;
-  cr_assert(parse_in_pieces(text, len, 1, &whole, whole_err, sizeof whole_err), "%s", whole_err);
-  for (int chunks = 2; chunks <= 9; chunks++) {
-    int reparses = pieces_reparses, pending = pieces_pending;
-    bool ok_p = parse_in_pieces(text, len, chunks, &pieces, piece_err, sizeof piece_err);
-    CHECK_THAT(c, ok_p && same_scene(&whole, &pieces) && pieces_reparses == reparses,
-               "a header and 3000 spheres%s, in %d pieces: expected the whole parse's scene "
-               "from the pieces, got %s%s", own_materials ? " (pieces define materials)" : "",
-               chunks, !ok_p ? "an error" : same_scene(&whole, &pieces) ? "it" : "another scene",
-               pieces_reparses == reparses ? "" : " only from parsing again whole");
-    CHECK_THAT(c, own_materials || pieces_pending == pending,
-               "3000 spheres naming the header's materials, in %d pieces: expected 0 "
-               "references left pending by the pieces (each given the header's materials), "
-               "got %d", chunks, pieces_pending - pending);
-    if (ok_p)
-      scene_free(&pieces);
-  }
-  scene_free(&whole);
-}
-
-Test(parse_pieces, header_materials_reach_every_piece)
-{
-  Check c = CHECK("pieces_load", "docs/reliability.md, \"Large scenes\"");
-  header_and_spheres(&c, false);
-  header_and_spheres(&c, true);
-  CHECK_DONE(&c);
-}
-
-/* A scene file of 8 MB or more is mapped, not read into a buffer: nothing
- * follows its last byte. Such files, one ending in a newline and one whose
- * last line has none and ends exactly at a page boundary, parse as their
- * text does. */
-Test(parse_pieces, a_mapped_file_parses_as_its_text, .timeout = 120)
+Test(fast_reader, a_mapped_file_parses_as_its_text, .timeout = 120)
 {
   Check c = CHECK("parser_load_file", "docs/scene-format.md, \"Errors\"");
   size_t cap = 10u << 20;
@@ -369,19 +182,17 @@ static size_t sphere_variant(uint64_t *s, char *out, size_t size)
   return len;
 }
 
-/* `text` parsed with sphere_line (sphere_line_on) in `pieces` pieces and
- * by the general path whole: one check that they give the same scene or
- * the same message (`what` names the text). Whether the general path read
- * a scene. */
-static bool fast_as_general(Check *c, const char *text, size_t len, int pieces,
-                            const char *what)
+/* `text` parsed with the pack's sphere lines (sphere_line_on) and by the
+ * general path: one check that they give the same scene or the same message
+ * (`what` names the text). Whether the general path read a scene. */
+static bool fast_as_general(Check *c, const char *text, size_t len, const char *what)
 {
   char err_f[512], err_g[512];
   Scene a, b;
   sphere_line_on = true;
-  bool ok_f = parse_in_pieces(text, len, pieces, &a, err_f, sizeof err_f);
+  bool ok_f = parse_captured_text(text, len, &a, err_f, sizeof err_f);
   sphere_line_on = false;
-  bool ok_g = parse_in_pieces(text, len, 1, &b, err_g, sizeof err_g);
+  bool ok_g = parse_captured_text(text, len, &b, err_g, sizeof err_g);
   sphere_line_on = true;
   CHECK_THAT(c, same_parse(ok_g, err_g, &b, ok_f, err_f, &a),
              "%s:\n  expected (general path) %s%.200s\n  got (fast path)      %s%.200s", what,
@@ -399,7 +210,7 @@ static bool fast_as_general(Check *c, const char *text, size_t len, int pieces,
  * lines, each alone between a material defined before and one defined
  * after, with and without a final newline; the same scene, or the same
  * message. */
-Test(parse_pieces, sphere_lines_read_fast_parse_as_the_general_path, .timeout = 60)
+Test(fast_reader, sphere_lines_read_fast_parse_as_the_general_path, .timeout = 60)
 {
   Check c = CHECK("parser_statements", "docs/reliability.md, \"Large scenes\"");
   uint64_t s = 0x243F6A8885A308D3ull;
@@ -416,7 +227,7 @@ Test(parse_pieces, sphere_lines_read_fast_parse_as_the_general_path, .timeout = 
     char what[600];
     snprintf(what, sizeof what, "the line '%.*s'%s", (int)n, line,
              newline ? " and a newline" : "");
-    good += fast_as_general(&c, text, len, 1, what);
+    good += fast_as_general(&c, text, len, what);
   }
   sphere_line_on = true;
   CHECK_THAT(&c, good > 5000 && good < 18000, "expected both good and bad lines among the "
@@ -425,12 +236,12 @@ Test(parse_pieces, sphere_lines_read_fast_parse_as_the_general_path, .timeout = 
 }
 
 /* Many sphere lines in one text, their material names from a set that
- * sphere_line remembers in part (the last 8 it found): names of 1 to 20
+ * the parser remembers in part (the last one): names of 1 to 20
  * bytes, some a prefix of another or the same length and equal to it in
  * their first 8 or 15 bytes; lines that end in a space, a '\r', a comment
  * or an extra word, or at the end of the text; the same scene, or the same
  * message, as the general path. */
-Test(parse_pieces, sphere_lines_naming_many_materials_parse_as_the_general_path,
+Test(fast_reader, sphere_lines_naming_many_materials_parse_as_the_general_path,
      .timeout = 60)
 {
   Check c = CHECK("parser_statements", "docs/reliability.md, \"Large scenes\"");
@@ -470,9 +281,9 @@ Test(parse_pieces, sphere_lines_naming_many_materials_parse_as_the_general_path,
     }
     if (k % 4 == 1)
       len += (size_t)snprintf(text + len, sizeof text - len, "material late diffuse 1 1 1\n");
-    char what[64]; /* the fast path in 1 to 3 pieces, each remembering its own names */
-    snprintf(what, sizeof what, "text %d (%d sphere lines, %d pieces)", k, lines, 1 + k % 3);
-    good += fast_as_general(&c, text, len, 1 + k % 3, what);
+    char what[64];
+    snprintf(what, sizeof what, "text %d (%d sphere lines)", k, lines);
+    good += fast_as_general(&c, text, len, what);
   }
   sphere_line_on = true;
   CHECK_THAT(&c, good > 900 && good < 1400, "expected both good and bad texts among the "
