@@ -13,7 +13,8 @@ scratch_top() {
 
 # scratch_sync TOP TREE: make TREE hold exactly the tracked files of TOP.
 # Only files whose content differs are copied, without keeping their times,
-# so make rebuilds exactly what changed since the last build in TREE.
+# so make rebuilds exactly what changed since the last build in TREE; files
+# TOP no longer tracks are removed.
 scratch_sync() {
   local top=$1 tree=$2 f
   mkdir -p "$tree"
@@ -25,6 +26,11 @@ scratch_sync() {
       cp "$top/$f" "$tree/$f"
     fi
   done < <(git -C "$top" ls-files -z)
+  # A file the tree no longer tracks (deleted or moved since the last sync)
+  # goes too: the Makefile's wildcards would build it. build/ stays.
+  comm -23 <(cd "$tree" && find . -path ./build -prune -o -type f -print | sed 's|^\./||' | LC_ALL=C sort) \
+           <(git -C "$top" ls-files | LC_ALL=C sort) |
+    while IFS= read -r f; do rm -f "$tree/$f"; done
 }
 
 # scratch_restore TOP TREE FILE...: put the tracked content back.
