@@ -13,32 +13,27 @@ STEPS := 01-film 02-intersection 03-camera 04-phong 05-shadows 06-ambient \
          07-antialiasing 08-area-lights
 PRESENT := $(filter $(STEPS),$(notdir $(wildcard steps/[0-9][0-9]-*)))
 
-# Each step's default scene (compiled into its binary; none for 01-film).
-SCENE_01-film         := scenes/film.scene
-SCENE_02-intersection := scenes/spheres.scene
-SCENE_03-camera       := scenes/spheres.scene
-SCENE_04-phong        := scenes/spheres.scene
-SCENE_05-shadows      := scenes/spheres.scene
-SCENE_06-ambient      := scenes/ambient.scene
-SCENE_07-antialiasing := scenes/antialiasing.scene
-SCENE_08-area-lights  := scenes/area-lights.scene
+# Each step's manifest, steps/NN-name/step.mk (docs/instructors.md, "A step's
+# manifest"): its KEY = value lines read here as NN-name.KEY (the scene
+# compiled into its program, NN-name.SCENE; its unit tests tests/test_NAME.c,
+# NN-name.TESTS; ...). tools/manifest.sh reads the same files for the shell
+# tools and writes the header of the step's Step fields.
+MANIFEST_KEYS := SUMMARY FEATURES SAMPLER ADAPTIVE SCENE TESTS IMAGE_SIZE IMAGE_ARGS IMAGE_TOL \
+                 IMAGE_TERMS TRACE_ARGS
+define read_manifest
+include steps/$(1)/step.mk
+$$(foreach k,$$(MANIFEST_KEYS),$$(eval $(1).$$(k) := $$$$($$(k)))$$(eval undefine $$(k)))
+$$(foreach k,$$(filter TRACE_%,$$(.VARIABLES)),$$(eval undefine $$(k)))
+endef
+$(foreach s,$(PRESENT),$(eval $(call read_manifest,$(s))))
 
 # The shapes of the registry (common/shapes.h, one X(NAME, name, ...) line
-# each) that have a test of their own, tests/test_<name>.c: step 02 runs
-# them, beside the conformance suite (tests/test_shapes.c) that checks all.
+# each) that have a test of their own, tests/test_<name>.c: the word SHAPES
+# in a manifest's TESTS stands for them (step 02 runs them, beside the
+# conformance suite, tests/test_shapes.c, that checks all).
 SHAPE_NAMES := $(shell sed -n 's/^ *X.[A-Z0-9_]*, *\([a-z0-9_]*\),.*/\1/p' common/shapes.h)
 SHAPE_TESTS := $(foreach s,$(SHAPE_NAMES),$(if $(wildcard tests/test_$(s).c),$(s)))
-
-# Each step's unit tests: tests/test_<name>.c (make test-step N runs them).
-TESTS_01-film           := film export image
-TESTS_02-intersection   := ray $(SHAPE_TESTS) scene vec bounds shapes
-TESTS_03-camera         := camera parser cli
-TESTS_04-phong          := light phong
-# Steps 05-08 carry step 04's Phong region in their shade.c: they run its tests too.
-TESTS_05-shadows        := shadows shadows_lecture phong
-TESTS_06-ambient        := ambient phong
-TESTS_07-antialiasing   := sampler antialiasing phong
-TESTS_08-area-lights    := area_light phong
+$(foreach s,$(PRESENT),$(eval $(s).TESTS := $(patsubst SHAPES,$(SHAPE_TESTS),$($(s).TESTS))))
 STRESS_TESTS := $(patsubst tests/%.c,%,$(wildcard tests/stress_*.c))
 
 # ---------------------------------------------------------------- flags
@@ -217,9 +212,17 @@ $(1)_OBJ := $$($(1)_SRC:%.c=$(BUILD)/obj/%.o)
 $(1)_LIB := $$(filter-out %/main.o,$$($(1)_OBJ))
 $(BUILD)/obj/steps/$(1)/%.o: CFLAGS += -Isteps/$(1)
 
-$(BUILD)/gen/$(1)-scene.c: $(SCENE_$(1)) tools/scene2c.sh
+$(BUILD)/gen/$(1)-scene.c: $($(1).SCENE) tools/scene2c.sh steps/$(1)/step.mk
 	@mkdir -p $$(@D)
-	@tools/scene2c.sh $(SCENE_$(1)) > $$@
+	@tools/scene2c.sh $($(1).SCENE) > $$@
+
+# main.c's Step fields (STEP_MANIFEST) and the image test's reference size,
+# options and tolerance, from the manifest.
+$(BUILD)/gen/$(1)/step_manifest.h: steps/$(1)/step.mk tools/manifest.sh
+	@mkdir -p $$(@D)
+	@tools/manifest.sh header $(1) > $$@.tmp && mv $$@.tmp $$@
+$(BUILD)/obj/steps/$(1)/main.o: CFLAGS += -I$(BUILD)/gen/$(1) -include step_manifest.h
+$(BUILD)/obj/steps/$(1)/main.o: $(BUILD)/gen/$(1)/step_manifest.h
 
 $(BUILD)/bin/$(1): $$($(1)_OBJ) $(BUILD)/obj/gen/$(1)-scene.o $(LIBCOMMON)
 	@mkdir -p $$(@D)
@@ -230,12 +233,13 @@ $(BUILD)/out/$(1).png: $(BUILD)/bin/$(1)
 	@mkdir -p $$(@D)
 	@$(BUILD)/bin/$(1) -o $$@
 
-$(1)_TOBJ := $$(patsubst %,$(BUILD)/obj/tests/$(1)/test_%.o,$$(TESTS_$(1))) \
+$(1)_TOBJ := $$(patsubst %,$(BUILD)/obj/tests/$(1)/test_%.o,$$($(1).TESTS)) \
              $(BUILD)/obj/tests/$(1)/image_test.o
+$(BUILD)/obj/tests/$(1)/image_test.o: $(BUILD)/gen/$(1)/step_manifest.h
 $(BUILD)/obj/tests/$(1)/%.o: tests/%.c | $(BUILD)/.deps
 	@mkdir -p $$(@D)
 	@echo "CC $$<  ($(1) test)"
-	@$(CC) $(CFLAGS) $(TEST_OBJ_FLAGS) $$(PKG_CFLAGS) $(TEST_CFLAGS) -Isteps/$(1) -Itests \
+	@$(CC) $(CFLAGS) $(TEST_OBJ_FLAGS) $$(PKG_CFLAGS) $(TEST_CFLAGS) -Isteps/$(1) -I$(BUILD)/gen/$(1) -Itests \
 	  -DSTEP_NAME='"$(1)"' -DBUILD_DIR='"$(BUILD)"' -c $$< -o $$@
 $(BUILD)/tests/$(1): $$($(1)_TOBJ) $$($(1)_LIB) $(LIBCOMMON) $(BUILD)/bin/$(1)
 	@mkdir -p $$(@D)
@@ -323,24 +327,17 @@ sanitize-gcc:
 	$(MAKE) BUILD=build/san SAN=1 OPT=-O1 test
 
 # ---------------------------------------------------------------- images, diffs
-# Reference images: each step's default scene at the reference size, with the
-# image test's options (tools/images.sh). Only on purpose: they are what the
-# image tests compare against (make check-images says when they are stale).
-images: $(BINS)
-	@tools/images.sh write $(BUILD) $(PRESENT)
+# The reference images, traces, diffs and the docs' pictures are derived
+# files: make regen (mk/regen.mk) rewrites those that changed.
 
 # The pictures of shadow and ambient mistakes in docs/05-shadows.md and
-# docs/06-ambient.md: tools/mistakes.c renders them (on purpose only).
+# docs/06-ambient.md: tools/mistakes.c renders them (make regen, through
+# tools/docimg.sh).
 $(BUILD)/bin/mistakes: $(BUILD)/obj/tools/mistakes.o $(BUILD)/obj/gen/05-shadows-scene.o \
                        $(LIBCOMMON)
 	@mkdir -p $(@D)
 	@echo "LD $@"
 	@$(CC) $(CFLAGS) $(LDFLAGS) $^ $(LDLIBS) -o $@
-mistakes: $(BUILD)/bin/mistakes $(BUILD)/bin/05-shadows $(BUILD)/bin/06-ambient
-	@tools/mistakes.sh $(BUILD)/bin
-
-diffs:
-	@tools/diffs.sh write $(PRESENT)
 check-diffs:
 	@tools/diffs.sh check $(PRESENT)
 
@@ -382,7 +379,8 @@ check:
 	echo "make check: every stage passed"
 
 # The files derived from the sources are up to date, every citation exists.
-check-derived: check-diffs check-refs check-mutants check-diagnoses check-images check-traces
+# A stale one says "run make regen".
+check-derived: check-diffs check-refs check-mutants check-diagnoses check-images check-traces check-docimg
 .PHONY: check check-derived
 
 help:
@@ -405,7 +403,7 @@ help:
 	@echo "  make print-flags  the compiler and flags in use"
 	@echo "For instructors (docs/instructors.md)"
 	@echo "  make check        make test, then every check of the course, stage by stage:"
-	@echo "    make check-derived   check-diffs, check-refs, check-mutants, check-images, check-traces"
+	@echo "    make check-derived   check-diffs, check-refs, check-mutants, check-images, check-traces, check-docimg"
 	@echo "    make check-report    the report in headless Chromium"
 	@echo "    make test-grade      grade the sample class and check every verdict, the pages, Gradescope"
 	@echo "    make check-starter   play a student through the starter, step by step, then make test"
@@ -427,18 +425,19 @@ help:
 	@echo "Performance (docs/benchmarks.md, docs/performance.md)"
 	@echo "  make bench        measure speed and error against POV-Ray, write docs/benchmarks.md"
 	@echo "  make bench-accuracy  time step 05's frame, robust vs textbook geometry (docs/accuracy.md)"
-	@echo "Generated files (on purpose only)"
-	@echo "  make images       regenerate the reference images in images/"
-	@echo "  make traces       rewrite the reference traces tests/traces/"
-	@echo "  make diffs        write docs/diffs/NN-name.diff (each step against the previous)"
-	@echo "  make mistakes, make trace-mistakes  the pictures and traces of the docs' mistakes"
+	@echo "Derived files (docs/instructors.md, \"Derived files\")"
+	@echo "  make regen        rebuild every derived file, write those that changed, list the places to re-read"
+	@echo "                    (REGEN_BENCH=1: make bench too); steps/NN-name/step.mk is each step's manifest"
+	@echo "  make images, make traces, make diffs, make docimg  one part of make regen: images/, tests/traces/,"
+	@echo "                    docs/diffs/, docs/img/"
+	@echo "  make trace-mistakes  the trace lines of the docs' mistakes (their pictures: make docimg)"
 	@echo "  make clean        remove $(BUILD)/"
 
 starter:
 	@tools/starter.sh $(BUILD)/starter $(N)
 
-.PHONY: all build deps bench-deps test test-build stress test-step sanitize sanitize-gcc images diffs \
-        check-diffs bench bench-accuracy clean help starter mistakes
+.PHONY: all build deps bench-deps test test-build stress test-step sanitize sanitize-gcc \
+        check-diffs bench bench-accuracy clean help starter
 
 # Each tool's rules (fuzzing, grading, region checks, ...) in a file of its own.
 include $(wildcard mk/*.mk)

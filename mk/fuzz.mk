@@ -35,9 +35,11 @@ $(FUZZ_BUILD)/obj/%.o: %.c tests/fuzz/ubsan-ignore.txt | clang-deps $(BUILD)/.de
 	@mkdir -p $(@D)
 	@echo "CC $<  (fuzz)"
 	@clang $(FUZZ_CFLAGS) -I$(FUZZ_STEP) -fsanitize=fuzzer-no-link -c $< -o $@
-$(FUZZ_BUILD)/obj/step08-main.o: $(FUZZ_STEP)/main.c tests/fuzz/fuzz.h tests/fuzz/ubsan-ignore.txt | clang-deps $(BUILD)/.deps
+$(FUZZ_BUILD)/obj/step08-main.o: $(FUZZ_STEP)/main.c tests/fuzz/fuzz.h tests/fuzz/ubsan-ignore.txt \
+                                 $(BUILD)/gen/08-area-lights/step_manifest.h | clang-deps $(BUILD)/.deps
 	@mkdir -p $(@D)
-	@clang $(FUZZ_CFLAGS) $(FUZZ_STEP_MAIN) -fsanitize=fuzzer-no-link -c $< -o $@
+	@clang $(FUZZ_CFLAGS) -I$(BUILD)/gen/08-area-lights -include step_manifest.h $(FUZZ_STEP_MAIN) \
+	  -fsanitize=fuzzer-no-link -c $< -o $@
 $(FUZZ_BUILD)/obj/entry-%.o: tests/fuzz/libfuzzer.c tests/fuzz/fuzz.h tests/fuzz/ubsan-ignore.txt | clang-deps $(BUILD)/.deps
 	@mkdir -p $(@D)
 	@clang $(FUZZ_CFLAGS) -DFUZZ_ENTRY=fuzz_$* -fsanitize=fuzzer-no-link -c $< -o $@

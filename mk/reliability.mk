@@ -17,10 +17,12 @@ $(BUILD)/obj/tests/rel/%.o: tests/%.c | $(BUILD)/.deps
 	  -DREL_STEP='"$(REL_STEP)"' -c $< -o $@
 
 # Step 08's main renamed for the fuzzing targets (tests/fuzz/fuzz.h).
-$(BUILD)/obj/tests/rel/step08-main.o: steps/$(REL_STEP)/main.c tests/fuzz/fuzz.h | $(BUILD)/.deps
+$(BUILD)/obj/tests/rel/step08-main.o: steps/$(REL_STEP)/main.c tests/fuzz/fuzz.h \
+                                      $(BUILD)/gen/$(REL_STEP)/step_manifest.h | $(BUILD)/.deps
 	@mkdir -p $(@D)
 	@echo "CC $<  (reliability: step 08 for the fuzzing targets)"
-	@$(CC) $(CFLAGS) $(PKG_CFLAGS) -Isteps/$(REL_STEP) -Itests/fuzz -Dmain=fuzz_step08_main \
+	@$(CC) $(CFLAGS) $(PKG_CFLAGS) -Isteps/$(REL_STEP) -I$(BUILD)/gen/$(REL_STEP) -include step_manifest.h \
+	  -Itests/fuzz -Dmain=fuzz_step08_main \
 	  -Dapp_run=fuzz_app_run -include tests/fuzz/fuzz.h -c $< -o $@
 
 $(BUILD)/tests/reliability: $(REL_OBJ) $($(REL_STEP)_LIB) $(LIBCOMMON) $(BUILD)/bin/$(REL_STEP)

@@ -4,7 +4,7 @@
 #   make check-starter  the starter builds, fails exactly the unwritten steps,
 #                       and passes steps 1..K once a student wrote them
 #   make check-refs     every file and doc section a source or test cites exists
-#   make check-images   the reference images are what make images renders now
+#   make check-images   the reference images are what make regen renders now
 
 # make carry N  (or N=5)
 ifeq (carry,$(firstword $(MAKECMDGOALS)))

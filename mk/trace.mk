@@ -9,10 +9,8 @@ $(TRACE_DIFF): $(BUILD)/obj/tools/trace-diff.o $(LIBCOMMON)
 	@echo "LD $@"
 	@$(CC) $(CFLAGS) $(LDFLAGS) $^ $(LDLIBS) -o $@
 
-# The reference traces: the pixels of tests/traces/pixels traced by the
-# solution's binaries (on purpose only, like make images).
-traces: $(BINS)
-	@tools/traces.sh write $(BUILD) $(PRESENT)
+# The reference traces tests/traces/STEP/X_Y.json: the pixels of each step's
+# manifest (TRACE_X_Y lines), traced by the solution; make regen rewrites them.
 
 # make trace-step N [X Y]: step N's traces against the references, the first
 # line that differs for each pixel (or only pixel X Y).
@@ -27,16 +25,17 @@ trace-step: $(TRACE_DIFF) $(if $(filter $(STEP_N),$(PRESENT)),$(BUILD)/bin/$(STE
 	  echo "make trace-step: there is no step '$(N)' (steps are 1 .. 8)"; exit 2; fi
 	@tools/traces.sh compare $(BUILD) $(STEP_N) $(TRACE_XY)
 
-# CI: the solution's traces are the references (make traces after a change
+# CI: the solution's traces are the references (make regen after a change
 # that moves them on purpose).
 check-traces: $(TRACE_DIFF) $(BINS)
 	@status=0; for s in $(PRESENT); do \
 	  tools/traces.sh compare $(BUILD) $$s > $(BUILD)/check-traces.log 2>&1 || { \
 	    cat $(BUILD)/check-traces.log; status=1; }; done; \
-	[ $$status = 0 ] && echo "check-traces: every reference trace agrees with the solution"; \
+	if [ $$status = 0 ]; then echo "check-traces: every reference trace agrees with the solution"; \
+	else echo "check-traces: the traces above are stale: run make regen (if the change is meant)"; fi; \
 	exit $$status
 
-.PHONY: traces trace-step check-traces
+.PHONY: trace-step check-traces
 
 # The tests of --trace and --aov (tests/test_trace.c): they run every step's
 # binary, so they are a test binary of their own, run by make test.
@@ -88,8 +87,9 @@ $(BUILD)/bin/report-check: $(BUILD)/obj/tools/report-check.o $(LIBCOMMON)
 	@echo "LD $@"
 	@$(CC) $(CFLAGS) $(LDFLAGS) $^ $(LDLIBS) -o $@
 
-# The pictures and trace lines of the step docs' "Seeing the mistake"
-# sections (tools/trace-mistakes.sh; on purpose only, several minutes).
+# The trace lines of the step docs' "Seeing the mistake" sections
+# (tools/trace-mistakes.sh; on purpose only, minutes; their pictures, which
+# land in build/ here, are make regen's, through tools/docimg.sh).
 trace-mistakes: $(BINS)
-	@tools/trace-mistakes.sh $(BUILD)
+	@OUT=$(BUILD)/trace-mistakes-img tools/trace-mistakes.sh $(BUILD)
 .PHONY: trace-mistakes

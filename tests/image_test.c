@@ -4,8 +4,9 @@
  * every byte against the floats of the .pfm. docs/testing.md, "The image test".
  *
  * Options. The command line is `--width W --height H --threads 2 --quiet`
- * plus the options in images/STEP_NAME.args when that file exists (one line,
- * e.g. `--samples 256 --seed 3`); `make images` renders with the same ones.
+ * plus the step's IMAGE_ARGS (steps/STEP_NAME/step.mk, the step's manifest,
+ * through build/gen/STEP_NAME/step_manifest.h); `make regen` renders the
+ * reference with the same ones.
  *
  * Tolerance. The binary writes a .pfm (the film's exact floats); each float is
  * clamped to [0, 1] (what the PNG export does) and compared with the
@@ -14,12 +15,11 @@
  * move a value across a rounding boundary: 1.5/255 then still passes. A
  * channel may exceed 1.5/255 in at most 0.1% of channels (a silhouette pixel
  * whose ray grazes a sphere can flip between two objects), but never 16/255:
- * a wrong formula moves whole regions by far more than that. A noisy step may
- * set its own with images/STEP_NAME.tol: "tol fraction [max]", tol and max in
- * 1/255 units (the defaults are "1.5 0.001 16"). */
+ * a wrong formula moves whole regions by far more than that. These are the
+ * manifest's IMAGE_TOL "1.5 0.001 16" (TOL FRACTION MAX, TOL and MAX in 1/255
+ * units); a noisy step sets its own there. */
 #include "check.h"
 
-#include <ctype.h>
 #include <stdlib.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
@@ -27,6 +27,7 @@
 #include <stb_image.h>
 
 #include "app/image.h"
+#include "step_manifest.h"
 #include "terms.h"
 
 #define REF_PATH "images/" STEP_NAME ".png"
@@ -75,41 +76,17 @@ typedef struct Tolerance {
   double tol, fraction, max; /* tol and max in 1/255 units */
 } Tolerance;
 
-/* The step's tolerance: the defaults above, or images/STEP_NAME.tol. */
+/* The step's tolerance: the manifest's IMAGE_TOL. */
 static Tolerance tolerance(void)
 {
-  Tolerance t = {1.5, 0.001, 16.0};
-  FILE *f = fopen("images/" STEP_NAME ".tol", "r");
-  if (!f)
-    return t;
-  double tol, fraction, max;
-  int n = fscanf(f, "%lf %lf %lf", &tol, &fraction, &max);
-  fclose(f);
-  cr_assert(n >= 2 && tol > 0.0 && fraction >= 0.0 && fraction < 1.0,
-            "images/" STEP_NAME ".tol: expected 'tol fraction [max]' (tol in 1/255 "
-            "units, fraction in [0, 1))");
-  t.tol = tol;
-  t.fraction = fraction;
-  t.max = n >= 3 ? max : fmax(16.0, tol);
-  return t;
+  return (Tolerance){STEP_IMAGE_TOL, STEP_IMAGE_FRACTION, STEP_IMAGE_MAX};
 }
 
-/* images/STEP_NAME.args: the step's extra options (empty without the file).
- * Only option characters, so that it cannot do anything but pass options. */
+/* The step's extra options: the manifest's IMAGE_ARGS (tools/manifest.sh
+ * allows option characters only). */
 static void step_args(char *out, size_t size)
 {
-  out[0] = 0;
-  FILE *f = fopen("images/" STEP_NAME ".args", "r");
-  if (!f)
-    return;
-  if (!fgets(out, (int)size, f))
-    out[0] = 0;
-  fclose(f);
-  out[strcspn(out, "\n")] = 0;
-  for (const char *c = out; *c; c++)
-    cr_assert(isalnum((unsigned char)*c) || strchr(" .=_-", *c),
-              "images/" STEP_NAME ".args: '%c' is not allowed (options only: letters, "
-              "digits, spaces, '.', '=', '_', '-')", *c);
+  snprintf(out, size, "%s", STEP_IMAGE_ARGS);
 }
 
 /* Render the step's default scene at w x h to `path` (.pfm or .png). What the
@@ -139,13 +116,11 @@ static void render(int w, int h, const char *path)
             said[0] ? "; it said:\n" : "", said, STEP_CODE[step_index()].doc);
 }
 
-/* The reference image's size. */
+/* The reference image's size: the manifest's IMAGE_SIZE. */
 static void reference_size(int *w, int *h)
 {
-  float *ref;
-  cr_assert(image_load(REF_PATH, w, h, &ref), "no reference image %s (make images writes it)",
-            REF_PATH);
-  free(ref);
+  *w = STEP_IMAGE_WIDTH;
+  *h = STEP_IMAGE_HEIGHT;
 }
 
 Test(reference_image, render_matches_the_reference, .timeout = 300)
@@ -153,8 +128,11 @@ Test(reference_image, render_matches_the_reference, .timeout = 300)
   const char *out_path = OUT_DIR "/" STEP_NAME ".pfm";
   int rw, rh, w, h;
   float *ref, *out;
-  cr_assert(image_load(REF_PATH, &rw, &rh, &ref), "no reference image %s (make images "
-            "writes it)", REF_PATH);
+  cr_assert(image_load(REF_PATH, &rw, &rh, &ref), "no reference image %s (run make regen)",
+            REF_PATH);
+  reference_size(&w, &h);
+  cr_assert(w == rw && h == rh, "%s is %dx%d, steps/" STEP_NAME "/step.mk's IMAGE_SIZE %dx%d "
+            "(run make regen)", REF_PATH, rw, rh, w, h);
   render(rw, rh, out_path);
   cr_assert(image_load(out_path, &w, &h, &out), "cannot read the render %s", out_path);
   cr_assert(w == rw && h == rh, "render is %dx%d, reference %dx%d", w, h, rw, rh);

@@ -6,9 +6,10 @@
 # small icon instead):
 #   1. BUILD/report/index.html, the one make test just wrote;
 #   2. a scratch copy (BUILD/report-test) where step 03 passes and step 04
-#      fails: its reference pictures are rendered from a scene whose red
-#      material lost its specular colour, so the image test fails and compares
-#      the terms.
+#      fails: its reference pictures are rendered from step 04's scene (its
+#      manifest's SCENE) whose first material with a specular term lost it, so
+#      the image test fails and compares the terms. When no material of that
+#      scene has a specular term, the check fails and says so.
 # Usage: tests/report.sh BUILD. Prints one verdict line per report; exit 1
 # when a picture is not shown. Without chromium it says SKIP and exits 0.
 set -uo pipefail
@@ -57,11 +58,22 @@ for d in bin tests; do ln -s "$(realpath "$build/$d")" "$scratch/$build/$d"; don
 cp -r images "$scratch/"
 cp tools/report.html "$scratch/tools/"
 cp tests/run.sh "$scratch/tests/"
-sed 's/^\(material red .*\) specular [0-9. ]* shininess [0-9]*/\1/' scenes/spheres.scene \
-  > "$scratch/broken.scene"
-for what in "" .ambient .diffuse .specular; do
-  "$build/bin/04-phong" --scene "$scratch/broken.scene" --width 320 --height 240 --threads 2 \
-    --quiet ${what:+--aov ${what#.}} -o "$scratch/images/04-phong$what.png" || exit 1
+scene=$(tools/manifest.sh get 04-phong SCENE) && size=$(tools/manifest.sh get 04-phong IMAGE_SIZE) &&
+  args=$(tools/manifest.sh get 04-phong IMAGE_ARGS) && terms=$(tools/manifest.sh get 04-phong IMAGE_TERMS) ||
+  { echo "FAIL  report in a browser: cannot read steps/04-phong/step.mk"; exit 1; }
+# The first material line with "specular R G B shininess N", without them.
+awk '!done && $1 == "material" && / specular [-0-9.e]+ [-0-9.e]+ [-0-9.e]+ shininess [0-9.e]+/ {
+       sub(/ +specular [-0-9.e]+ [-0-9.e]+ [-0-9.e]+ shininess [0-9.e]+/, ""); done = 1 }
+     { print }' "$scene" > "$scratch/broken.scene"
+if cmp -s "$scene" "$scratch/broken.scene"; then
+  echo "FAIL  report in a browser: the scratch report's failing step 04 needs a material with a"
+  echo "      specular term in $scene (step 04's SCENE): no 'material NAME ... specular R G B"
+  echo "      shininess N' line there; give tests/report.sh a scene that has one"; exit 1
+fi
+for what in "" $terms; do
+  # shellcheck disable=SC2086 # options
+  "$build/bin/04-phong" --scene "$scratch/broken.scene" --width "${size% *}" --height "${size#* }" \
+    --threads 2 --quiet $args ${what:+--aov $what} -o "$scratch/images/04-phong${what:+.$what}.png" || exit 1
 done
 (cd "$scratch" && tests/run.sh "$build/tests/03-camera" "$build/tests/04-phong" > run.log 2>&1
  "$build/bin/report" "$build" tools/report.html > /dev/null)

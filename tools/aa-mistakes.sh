@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# Render the pictures of docs/07-antialiasing.md into docs/img/: sample
+# Render the pictures of docs/07-antialiasing.md into docs/img/ (or OUT): sample
 # patterns of one pixel and the typical antialiasing mistakes beside step
-# 07's answers. Builds tools/aa-mistakes.c itself. Usage: tools/aa-mistakes.sh
-# (after make build).
+# 07's answers. Builds tools/aa-mistakes.c itself. Usage: [OUT=DIR]
+# tools/aa-mistakes.sh (after make build; make regen runs it through
+# tools/docimg.sh, OUT a scratch folder; default docs/img).
 set -euo pipefail
 bin=build/bin
 make --no-print-directory build/bin/07-antialiasing >/dev/null
@@ -14,12 +15,13 @@ $CC $CFLAGS $LDFLAGS -Isteps/07-antialiasing \
   tools/aa-mistakes.c steps/07-antialiasing/shade.c build/obj/gen/07-antialiasing-scene.o \
   build/libcommon.a $LDLIBS -o $bin/aa-mistakes
 # shellcheck disable=SC2086
-$CC $CFLAGS $LDFLAGS -Isteps/07-antialiasing \
-  tools/aa-samples.c steps/07-antialiasing/shade.c build/obj/gen/07-antialiasing-scene.o \
+$CC $CFLAGS -Wno-missing-prototypes $LDFLAGS -Isteps/07-antialiasing \
+  -Ibuild/gen/07-antialiasing -include step_manifest.h tools/aa-samples.c steps/07-antialiasing/shade.c build/obj/gen/07-antialiasing-scene.o \
   build/libcommon.a $LDLIBS -o $bin/aa-samples
-mkdir -p docs/img
+img=${OUT:-docs/img}
+mkdir -p "$img"
 for s in grid random jitter sobol; do
-  $bin/aa-mistakes points $s 16 docs/img/07-points-$s.png
+  $bin/aa-mistakes points $s 16 $img/07-points-$s.png
 done
 size=(--width 400 --height 300 --threads 2 --quiet)
 tmp=build/aa-mistakes
@@ -27,10 +29,10 @@ mkdir -p $tmp
 # run NAME PROGRAM ARGS...: render NAME, then the zoomed box of the pearl rows.
 run() {
   local name=$1; shift
-  echo "$*" "${size[*]}" -o docs/img/$name.png
-  "$@" "${size[@]}" -o docs/img/$name.png
+  echo "$*" "${size[*]}" -o $img/$name.png
+  "$@" "${size[@]}" -o $img/$name.png
   "$@" "${size[@]}" -o $tmp/$name.pfm
-  $bin/aa-mistakes zoom $tmp/$name.pfm 96 95 100 50 docs/img/$name-zoom.png
+  $bin/aa-mistakes zoom $tmp/$name.pfm 96 95 100 50 $img/$name-zoom.png
 }
 s07=$bin/07-antialiasing
 run 07-center-1     $s07 --sampler center --samples 1 --adaptive 0
@@ -42,6 +44,6 @@ run 07-same-numbers $bin/aa-mistakes same-numbers --sampler jitter --samples 4
 run 07-default      $s07
 run 07-converged    $s07 --sampler jitter --samples 1024 --adaptive 0
 # Where the default's adaptive sampling put its samples, and the same zoom.
-$bin/aa-samples 400 300 64 0.05 docs/img/07-samples.png
+$bin/aa-samples 400 300 64 0.05 $img/07-samples.png
 $bin/aa-samples 400 300 64 0.05 $tmp/07-samples.pfm
-$bin/aa-mistakes zoom $tmp/07-samples.pfm 96 95 100 50 docs/img/07-samples-zoom.png
+$bin/aa-mistakes zoom $tmp/07-samples.pfm 96 95 100 50 $img/07-samples-zoom.png

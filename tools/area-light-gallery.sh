@@ -2,9 +2,11 @@
 # The pictures of docs/08-area-lights.md: the step's default scene right, with
 # too few or badly placed light samples, and with the typical mistakes (each
 # made by a one-line change to a copy of steps/08-area-lights/shade.c, built
-# in build/gallery/). Usage: tools/area-light-gallery.sh  (after make build)
+# in build/gallery/). Usage: [OUT=DIR] tools/area-light-gallery.sh (after make
+# build; make regen runs it through tools/docimg.sh, OUT a scratch folder;
+# default docs/img): the pictures go to OUT/08-area-lights/.
 set -euo pipefail
-out=docs/img/08-area-lights
+out=${OUT:-docs/img}/08-area-lights
 bin=build/bin/08-area-lights
 tmp=build/gallery
 mkdir -p "$out" "$tmp"
@@ -29,7 +31,8 @@ mistake() {
   cmp -s steps/08-area-lights/shade.c $tmp/$name/shade.c && { echo "gallery: '$name' changed nothing" >&2; exit 1; }
   # The Makefile's flags: cglm aligns its types (and so Scene) by -march.
   # shellcheck disable=SC2086
-  $CC $CFLAGS $LDFLAGS -Wno-error -I$tmp/$name $tmp/$name/main.c $tmp/$name/shade.c \
+  $CC $CFLAGS $LDFLAGS -Wno-error -I$tmp/$name -Ibuild/gen/08-area-lights \
+    -include step_manifest.h $tmp/$name/main.c $tmp/$name/shade.c \
     build/obj/gen/08-area-lights-scene.o build/libcommon.a $LDLIBS -o $tmp/$name/bin
   $tmp/$name/bin "${size[@]}" ${scene:+--scene $scene} -o $out/$name.png
 }

@@ -1,13 +1,15 @@
 #!/usr/bin/env bash
 # Render the pictures of docs/05-shadows.md and docs/06-ambient.md into
 # docs/img/: typical shadow and ambient mistakes (tools/mistakes.c) beside the
-# steps' right answers. Usage: tools/mistakes.sh BINDIR (make mistakes).
+# steps' right answers. Usage: [OUT=DIR] tools/mistakes.sh BINDIR (make regen
+# runs it through tools/docimg.sh, OUT a scratch folder; default docs/img).
 set -euo pipefail
 bin=$1
 size=(--width 400 --height 300 --threads 2 --quiet)
-mkdir -p docs/img
+out_dir=${OUT:-docs/img}
+mkdir -p "$out_dir"
 run() { # run OUTPUT PROGRAM ARGS...
-  local out=docs/img/$1; shift
+  local out=$out_dir/$1; shift
   echo "$*" "${size[*]}" -o "$out"
   "$@" "${size[@]}" -o "$out"
 }

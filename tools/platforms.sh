@@ -33,8 +33,9 @@ cd "$top" || exit 2
 BUILD=${BUILD:-build}
 STEPS=$(cd steps && ls -d [0-9][0-9]-* 2>/dev/null)
 
-size() { [ "$1" = 01-film ] && echo "--width 256 --height 128" || echo "--width 320 --height 240"; }
-terms() { case $1 in 0[4-8]-*) echo ambient diffuse specular ;; esac; }
+# The reference image's size and Phong terms: the step's manifest.
+size() { local wh; wh=$(tools/manifest.sh get "$1" IMAGE_SIZE); echo "--width ${wh% *} --height ${wh#* }"; }
+terms() { tools/manifest.sh get "$1" IMAGE_TERMS; }
 
 # renders BUILD OUT [RUNNER...]: every step's reference render (and its Phong
 # terms) as OUT/NAME.pfm, and step 04's canonical scene lit by its
@@ -45,7 +46,7 @@ renders() {
   shift 2
   mkdir -p "$out"
   for s in $STEPS; do
-    args=$(cat "images/$s.args" 2>/dev/null || true)
+    args=$(tools/manifest.sh get "$s" IMAGE_ARGS)
     for term in "" $(terms "$s"); do
       # shellcheck disable=SC2046,SC2086  # options and their values, split on spaces
       "$@" "$b/bin/$s" $(size "$s") --threads 2 --quiet $args ${term:+--aov $term} \
@@ -100,7 +101,7 @@ compare() {
     name=$(basename "$f" .pfm)
     case $name in light-*) continue ;; esac
     step=${name%%.*}
-    read -r tol frac max < <(cat "images/$step.tol" 2>/dev/null || echo "1.5 0.001 16")
+    read -r tol frac max < <(tools/manifest.sh get "$step" IMAGE_TOL)
     line=$("$BUILD/bin/pfmdiff" "$f" "images/$name.png" "$tol" "$frac" "${max:-16}") || failed=1
     say "$platform: $name against images/: $line"
     if [ "$dir" != "$ref" ] && [ -f "$ref/$name.pfm" ]; then

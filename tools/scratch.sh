@@ -13,8 +13,7 @@ scratch_top() {
 
 # scratch_sync TOP TREE: make TREE hold exactly the tracked files of TOP.
 # Only files whose content differs are copied, without keeping their times,
-# so make rebuilds exactly what changed since the last build in TREE; files
-# TOP no longer tracks are removed.
+# so make rebuilds exactly what changed since the last build in TREE.
 scratch_sync() {
   local top=$1 tree=$2 f
   mkdir -p "$tree"
@@ -26,10 +25,10 @@ scratch_sync() {
       cp "$top/$f" "$tree/$f"
     fi
   done < <(git -C "$top" ls-files -z)
-  # A file the tree no longer tracks (deleted or moved since the last sync)
-  # goes too: the Makefile's wildcards would build it. build/ stays.
+  # Files TOP no longer has (outside TREE's own build/): removed, or a
+  # Makefile's wildcard would still compile them.
   comm -23 <(cd "$tree" && find . -path ./build -prune -o -type f -print | sed 's|^\./||' | LC_ALL=C sort) \
-           <(git -C "$top" ls-files | LC_ALL=C sort) |
+           <(cd "$top" && git ls-files | while IFS= read -r f; do [ -e "$f" ] && echo "$f"; done | LC_ALL=C sort) |
     while IFS= read -r f; do rm -f "$tree/$f"; done
 }
 
@@ -57,8 +56,8 @@ scratch_make() {
     >"$tree/build/make.log" 2>&1
 }
 
-# The step folders of TREE (01-film ...), in order.
-scratch_steps() { (cd "$1/steps" && ls -d [0-9][0-9]-* | sort); }
+# The step folders of TREE that have a manifest (step.mk): 01-film ..., in order.
+scratch_steps() { (cd "$1/steps" && ls -d [0-9][0-9]-*/step.mk | sed "s|/step.mk||" | sort); }
 
 # The name of the step numbered NN in TREE (01 -> 01-film).
 scratch_step_name() { (cd "$1/steps" && ls -d "$2"-* 2>/dev/null | head -n 1); }

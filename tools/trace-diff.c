@@ -1,5 +1,5 @@
 /* trace-diff: a step's trace of one pixel against its reference trace
- * (tests/traces/NN-name/X_Y.json, written by `make traces` from the
+ * (tests/traces/NN-name/X_Y.json, written by `make regen` from the
  * solution). Runs the step's binary with the reference's options, reads both
  * JSON traces and prints the first line whose values differ beyond the
  * tolerance, both values and the doc section to read. `make trace-step N`

@@ -6,10 +6,17 @@
 # is compared with the mistaken one (tools/traces.sh compare: the first line
 # that differs, as make trace-step shows it) and a picture of one quantity
 # (--aov) is rendered next to the right one, into docs/img/NN-mistake.*.png.
-# Usage: tools/trace-mistakes.sh BUILD [STEP...]   (default: every step)
+# Usage: [OUT=DIR] tools/trace-mistakes.sh BUILD [STEP...]   (default: every
+# step; make regen runs it through tools/docimg.sh, OUT a scratch folder;
+# default docs/img). The scratch tree (BUILD/trace-mistakes) is kept from one
+# run to the next: each mistake rebuilds only what it changed.
 set -euo pipefail
 build=${1:?usage: tools/trace-mistakes.sh BUILD [STEP...]}; shift
+. "$(dirname "$0")/scratch.sh"
+scratch_top trace-mistakes
 scratch=$build/trace-mistakes
+img=${OUT:-docs/img}
+mkdir -p "$img"
 size="--width 320 --height 240 --threads 2 --quiet"
 
 # step | file | sed expression | pixel | what to draw (an --aov, or "" for the picture)
@@ -30,20 +37,19 @@ want=" $* "
 mistakes | while IFS='|' read -r step file expr pixel aov; do
   [ "$want" = "  " ] || [[ "$want" == *" $step "* ]] || continue
   echo "== $step: $file: $expr"
-  rm -rf "$scratch"; mkdir -p "$scratch"
-  git ls-files -z | xargs -0 tar -cf - | tar -xf - -C "$scratch"
+  scratch_sync "$top" "$scratch"
   sed -i "$expr" "$scratch/$file"
   if cmp -s "$file" "$scratch/$file"; then echo "$step: the mistake did not apply to $file"; exit 1; fi
   make -s -C "$scratch" -j2 "build/bin/$step" build/bin/trace-diff > /dev/null
   read -r x y <<<"$pixel"
   echo "\$ make trace-step $((10#${step%%-*})) $x $y"
   (cd "$scratch" && tools/traces.sh compare build "$step" "$x" "$y") || true
-  name=docs/img/${step%%-*}-mistake
+  name=$img/${step%%-*}-mistake
   if [ -n "$aov" ]; then
     "$scratch/build/bin/$step" $size --aov "$aov" -o "$name.$aov.png" 2>/dev/null
     "$build/bin/$step" $size --aov "$aov" -o "$name.right.$aov.png" 2>/dev/null
   else
     "$scratch/build/bin/$step" --threads 2 --quiet -o "$name.png"
   fi
+  scratch_restore "$top" "$scratch" "$file"
 done
-rm -rf "$scratch"

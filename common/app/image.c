@@ -143,9 +143,10 @@ static void picture_row(const void *picture, int j, unsigned char *out)
   bytes_row(picture, j, out);
 }
 
-/* Encode into `out`; false when the format is unknown or memory is short. */
+/* Encode into `out`; false when the format is unknown or memory is short.
+ * `plain`: a .png through libpng, never the speed pack's writer. */
 static bool encode(OutFile *out, const char *ext, int w, int h, const float *rgb,
-                   Tonemap tm)
+                   Tonemap tm, bool plain)
 {
   if (strcmp(ext, "pfm") == 0)
     return write_pfm(out, w, h, rgb);
@@ -162,7 +163,7 @@ static bool encode(OutFile *out, const char *ext, int w, int h, const float *rgb
   }
   if (strcmp(ext, "png") == 0) {
     Bytes b = {w, h, rgb, tm};
-    int packed = pack_png(out->f, w, h, picture_row, &b); /* in parallel, when it can */
+    int packed = plain ? -1 : pack_png(out->f, w, h, picture_row, &b); /* in parallel */
     return packed >= 0 ? packed == 1 : write_png(out, &b);
   }
   unsigned char *px = to_bytes(w, h, rgb, tm);
@@ -189,16 +190,30 @@ bool image_format_known(const char *path)
   return false;
 }
 
-bool image_save(const char *path, int w, int h, const float *rgb, Tonemap tm)
+static bool save(const char *path, int w, int h, const float *rgb, Tonemap tm, bool plain)
 {
   OutFile out;
   if (!image_format_known(path) || !outfile_open(&out, path))
     return false;
   errno = 0;
-  bool ok = encode(&out, extension(path), w, h, rgb, tm);
+  bool ok = encode(&out, extension(path), w, h, rgb, tm, plain);
   if (!ok && !out.err)
     out.err = errno ? errno : ENOMEM;
   return outfile_close(&out, ok);
+}
+
+bool image_save(const char *path, int w, int h, const float *rgb, Tonemap tm)
+{
+  return save(path, w, h, rgb, tm, false);
+}
+
+bool image_save_kept(const char *path, int w, int h, const float *rgb)
+{
+  if (strcmp(extension(path), "png") != 0) {
+    fprintf(stderr, "image: '%s': a kept picture is a .png\n", path);
+    return false;
+  }
+  return save(path, w, h, rgb, TONEMAP_CLAMP, true);
 }
 
 /* Read a PFM (either endianness, 1 or 3 channels) into RGB floats. */

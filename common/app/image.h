@@ -22,6 +22,12 @@ bool image_format_known(const char *path);
  * linear floats (no tone map). Prints one line and returns false on failure. */
 bool image_save(const char *path, int w, int h, const float *rgb, Tonemap tm);
 
+/* The writer of every picture the repository keeps (images/, docs/img/,
+ * written by make regen through tools/imgcmp.c): a .png through libpng
+ * alone, whatever the build's speed pack, so that every kept picture comes
+ * from one encoder. Clamped bytes; atomic like image_save. */
+bool image_save_kept(const char *path, int w, int h, const float *rgb);
+
 /* Load a .png (bytes / 255, no tone map undone) or .pfm (exact floats) into a
  * new buffer the caller frees with free(). Prints one line, false on failure. */
 bool image_load(const char *path, int *w, int *h, float **rgb);

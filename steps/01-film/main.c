@@ -19,10 +19,7 @@ static vec3s pixel(const Scene *scene, const Film *film, int i, int j, RenderCtx
 int main(int argc, char **argv)
 {
   const Step step = {
-      .name = "01-film",
-      .summary = "Step 01: the film. Four quadrants, red bottom left, green top left,\n"
-                 "blue bottom right, white top right (256x128 by default).",
-      .features = 0,
+      STEP_MANIFEST, /* name, summary, features, sampler, adaptive: step.mk */
       .pixel = pixel,
   };
   return app_run(argc, argv, &step);

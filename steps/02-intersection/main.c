@@ -32,10 +32,7 @@ static vec3s pixel(const Scene *scene, const Film *film, int i, int j, RenderCtx
 int main(int argc, char **argv)
 {
   const Step step = {
-      .name = "02-intersection",
-      .summary = "Step 02: ray-object intersection through a fixed camera. Left half:\n"
-                 "normals as colours; right half: distance as grey.",
-      .features = 0,
+      STEP_MANIFEST, /* name, summary, features, sampler, adaptive: step.mk */
       .pixel = pixel,
   };
   return app_run(argc, argv, &step);

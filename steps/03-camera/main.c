@@ -17,9 +17,7 @@ static vec3s pixel(const Scene *scene, const Film *film, int i, int j, RenderCtx
 int main(int argc, char **argv)
 {
   const Step step = {
-      .name = "03-camera",
-      .summary = "Step 03: the lookAt pinhole camera; objects in flat colours.",
-      .features = SCENE_CAMERA,
+      STEP_MANIFEST, /* name, summary, features, sampler, adaptive: step.mk */
       .pixel = pixel,
   };
   return app_run(argc, argv, &step);

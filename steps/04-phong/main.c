@@ -12,9 +12,7 @@ static vec3s pixel(const Scene *scene, const Film *film, int i, int j, RenderCtx
 int main(int argc, char **argv)
 {
   const Step step = {
-      .name = "04-phong",
-      .summary = "Step 04: Phong shading with point and directional lights, no shadows.",
-      .features = SCENE_CAMERA | SCENE_LIGHTS,
+      STEP_MANIFEST, /* name, summary, features, sampler, adaptive: step.mk */
       .pixel = pixel,
   };
   return app_run(argc, argv, &step);

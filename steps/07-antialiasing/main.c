@@ -104,14 +104,7 @@ static vec3s pixel(const Scene *scene, const Film *film, int i, int j, RenderCtx
 int main(int argc, char **argv)
 {
   const Step step = {
-      .name = "07-antialiasing",
-      .summary = "Step 07: antialiasing, several samples per pixel and adaptive sampling.\n"
-                 "Defaults: the scene's samples, --adaptive 0.05 (corners and centre, cut in\n"
-                 "four where they differ); with --adaptive 0, --sampler sobol (unbiased).",
-      .features = SCENE_CAMERA | SCENE_LIGHTS | SCENE_AMBIENT | SCENE_LIGHT_SHAPES |
-                  SCENE_SAMPLES,
-      .sampler = "sobol",
-      .adaptive = 0.05f,
+      STEP_MANIFEST, /* name, summary, features, sampler, adaptive: step.mk */
       .pixel = pixel,
   };
   return app_run(argc, argv, &step);

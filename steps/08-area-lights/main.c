@@ -104,14 +104,7 @@ static vec3s pixel(const Scene *scene, const Film *film, int i, int j, RenderCtx
 int main(int argc, char **argv)
 {
   const Step step = {
-      .name = "08-area-lights",
-      .summary = "Step 08: area lights, soft shadows from stratified light samples.\n"
-                 "Defaults: the scene's samples and light_samples, --sampler sobol, --adaptive 0\n"
-                 "(unbiased: every pixel takes all its samples).",
-      .features = SCENE_CAMERA | SCENE_LIGHTS | SCENE_AMBIENT | SCENE_LIGHT_SHAPES |
-                  SCENE_SAMPLES | SCENE_AREA_LIGHTS,
-      .sampler = "sobol",
-      .adaptive = 0.0f,
+      STEP_MANIFEST, /* name, summary, features, sampler, adaptive: step.mk */
       .pixel = pixel,
   };
   return app_run(argc, argv, &step);

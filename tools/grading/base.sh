@@ -45,7 +45,7 @@ targets=$(for s in $steps; do echo "build/bin/$s build/tests/$s"; done)
 stress=$(ls tests/stress_*.c >/dev/null 2>&1 && echo build/tests/stress || true)
 [ -z "$stress" ] || [ ! -f tools/mistakes.c ] || stress="$stress build/bin/mistakes"
 # The reference traces (tests/traces/, make trace-step N), where the tree has them.
-traces=$( [ -x tools/traces.sh ] && [ -f tests/traces/pixels ] && [ -f tools/trace-diff.c ] &&
+traces=$( [ -x tools/traces.sh ] && [ -x tools/manifest.sh ] && [ -f tools/trace-diff.c ] &&
           echo build/bin/trace-diff || true)
 make -C "$dir/solved" -s -j"$jobs" OPT="$opt" $targets $stress $traces >"$dir/build.log" 2>&1 || {
   echo "grade: the solution does not build with OPT=$opt: see $dir/build.log" >&2; exit 1; }
@@ -69,7 +69,7 @@ if [ -n "$failing" ]; then
 fi
 # The steps whose reference traces the solution matches (traces.txt).
 for s in $( [ -n "$traces" ] && echo $steps); do
-  grep -v '^#' tests/traces/pixels | awk -F'|' -v s="$s" '{ gsub(/ /, "", $1) } $1 == s' | grep -q . || continue
+  tools/manifest.sh traces "$s" 2>/dev/null | grep -q . || continue
   if (cd "$dir/solved" && tools/traces.sh compare build "$s" >/dev/null 2>&1); then echo "$s"
   else echo "grade: warning: the solution does not match its own reference traces of $s (not graded)" >&2; fi
 done >"$dir/traces.txt"

@@ -86,12 +86,10 @@ built() {
   else safe_file "$t/build/tests/$2" && safe_file "$t/build/bin/$2"; fi
 }
 
-# The step's tolerance for pictures: images/STEP.tol ("tol fraction [max]",
-# tol and max in 1/255) or the image test's defaults.
+# The step's tolerance for pictures: its manifest's IMAGE_TOL ("tol fraction
+# max", tol and max in 1/255; steps/STEP/step.mk).
 step_tolerance() {
-  local t=1.5 f=0.001 m=16
-  [ -f "$GRADE_BASE/solved/images/$1.tol" ] && read -r t f m <"$GRADE_BASE/solved/images/$1.tol"
-  echo "$t ${f:-0.001} ${m:-16}"
+  "$GRADE_BASE/solved/tools/manifest.sh" get "$1" IMAGE_TOL
 }
 
 # run_traces TREE STEP: the step's reference traces (make trace-step N) in the

@@ -61,7 +61,7 @@ picture_block() {
     local cmd="build/bin/$step"
     case $c in
       */reference_image) cmd="$cmd --width ${v[size]%x*} --height ${v[size]#*x}$(
-                           a=$(cat "$GRADE_BASE/solved/images/$step.args" 2>/dev/null); echo "${a:+ $a}")" ;;
+                           a=$("$GRADE_BASE/solved/tools/manifest.sh" get "$step" IMAGE_ARGS 2>/dev/null); echo "${a:+ $a}")" ;;
       */hidden/*) cmd="$cmd --scene ${c##*/}.scene --seed $(awk -F'\t' -v c="$c" '$1 == c { print $5 }' "$GRADE_PLAN")" ;;
     esac
     echo ": the largest difference is at pixel (${v[worst_x]}, ${v[worst_y]}) (x from the left, y from the top);"
