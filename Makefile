@@ -98,9 +98,6 @@ CFLAGS  := -std=c11 $(OPT) -g $(OMP_CFLAGS) $(FP_FLAGS) $(FP_FLAGS_$(CC_KIND)) \
            -D_POSIX_C_SOURCE=200809L $(SYS_CFLAGS) \
            -Wall -Wextra -Wpedantic -Wshadow -Wstrict-prototypes \
            -Wmissing-prototypes $(WARN_FLAGS_$(CC_KIND)) $(WERROR) -MMD -MP -Icommon -Ifast
-# TRACE_OFF=1: the trace hooks compiled out (make bench's comparison build;
-# --trace and --aov then record nothing).
-CFLAGS  += $(if $(TRACE_OFF),-DTRACE_COMPILED_OUT)
 PKG_CFLAGS = $(LIB_CFLAGS) $(STB_CFLAGS) $(filter -I%,$(TEST_CFLAGS))
 LDLIBS  := $(OMP_LIBS) $(LIB_LIBS) $(STB_LIBS) -lm
 # Every link but the steps' programs: without LTO (the fat objects' code),
@@ -348,9 +345,8 @@ bench: bench-deps $(BINS) bench-accuracy
 # The cost of the robust geometry (docs/accuracy.md, "Cost"): step 05's frame
 # with common/'s geometry and with tests/textbook.h's, in one process. Linked
 # without LTO: each side keeps its own functions (docs/accuracy.md says why).
-$(BUILD)/obj/bench/robust-cost.o: CFLAGS += -Itests -Isteps/05-shadows
-$(BUILD)/bin/robust-cost: $(BUILD)/obj/bench/robust-cost.o \
-                          $(BUILD)/obj/steps/05-shadows/shade.o $(LIBCOMMON)
+$(BUILD)/obj/bench/robust-cost.o: CFLAGS += -Itests
+$(BUILD)/bin/robust-cost: $(BUILD)/obj/bench/robust-cost.o $(LIBCOMMON)
 	@mkdir -p $(@D)
 	@echo "LD $@"
 	@$(CC) $(CFLAGS) -fno-lto $(LDFLAGS) $^ $(LDLIBS) -o $@
@@ -390,7 +386,6 @@ help:
 	@echo "  make test-step N  step N's unit tests and image test, and the stress tests of steps 1 .. N (N = 1 .. 8);"
 	@echo "                    a result nothing has changed since it passed is reused (RT_CACHE=0: run all)"
 	@echo "  make trace-step N [X Y]  step N's traces against the solution's: the first line that differs"
-	@echo "  make carry N      in a starter tree: copy your code of the steps below N into steps N to 8"
 	@echo "  make report       write $(BUILD)/report/index.html from the last test results"
 	@echo "  make stress [N=K] the numerical stress tests of the steps written so far (or of steps 1 .. K)"
 	@echo "  make test-reliability  the bad-input suite, the number reader, output files, fuzz corpus"

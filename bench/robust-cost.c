@@ -74,12 +74,6 @@ static bool float_bc_any(const Scene *sc, const Ray *r, float tmax)
 static const SceneIndex textbook_index = {textbook_closest, textbook_any};
 static const SceneIndex float_bc_index = {float_bc_closest, float_bc_any};
 
-/* Step 05's pixel: the centre sample through step 05's own shade_trace. */
-static vec3s px(const Scene *sc, const Film *film, int i, int j, RenderCtx *ctx)
-{
-  vec2s s = film_sample(film, i, j);
-  return shade_trace(sc, camera_ray(&sc->camera, s.x, s.y), ctx);
-}
 
 /* The frames compared: which scene (0 shipped index, 1 plain loop) and which
  * index replaces the plain loop's (NULL: scene.c's own loop). */
@@ -108,7 +102,7 @@ static bool load(const char *path, Scene *sc, const char *layout)
     setenv("RT_ACCEL", layout, 1);
   else
     unsetenv("RT_ACCEL");
-  bool ok = parser_load_file(path, sc) && scene_prepare(sc, SCENE_CAMERA | SCENE_LIGHTS) &&
+  bool ok = parser_load_file(path, sc) && scene_prepare(sc, SCENE_CAMERA | SCENE_LIGHTS | SCENE_SHADOWS) &&
             accel_build(sc);
   unsetenv("RT_ACCEL");
   return ok;
@@ -129,7 +123,7 @@ int main(int argc, char **argv)
   Film film;
   if (!film_init(&film, sc[0].width, sc[0].height))
     return 1;
-  RenderSettings set = {.threads = threads, .seed = 1};
+  RenderSettings set = {.threads = threads};
   static double sec[N_VAR][MAX_RUNS];
   /* Interleaved (v = 0, 1, 2, 3, 0, 1, ...): drifts of a shared machine hit
    * every variant alike. One untimed frame of each first warms the caches. */
@@ -139,7 +133,7 @@ int main(int argc, char **argv)
       Scene view = sc[variants[v].scene];
       if (variants[v].index)
         view.index = variants[v].index;
-      render(&view, &film, px, &set, &st);
+      render(&view, &film, shade_pixel, &set, &st);
       if (run >= 0)
         sec[v][run] = st.seconds;
       else if (prefix) {

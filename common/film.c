@@ -10,6 +10,7 @@ bool film_init(Film *film, int width, int height)
 {
   film->width = width;
   film->height = height;
+  film->memo = NULL;
   film->rgb = calloc((size_t)width * height * 3, sizeof(float));
   if (!film->rgb) {
     fprintf(stderr, "film: out of memory for %dx%d pixels\n", width, height);

@@ -16,6 +16,9 @@ typedef enum Tonemap {
 typedef struct Film {
   int width, height;
   float *rgb; /* width * height * 3 floats, row j = 0 first; owned */
+  struct RenderMemo *memo; /* adaptive sampling's colours traced so far in
+                            * this tile (steps 07, 08; app/render_point.h):
+                            * the render loop's, one per thread; NULL: none */
 } Film;
 
 /* Film limits the parser and command line enforce. */

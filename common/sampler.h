@@ -17,6 +17,16 @@ typedef enum SamplerKind {
   SAMPLER_COUNT
 } SamplerKind;
 
+/* How a render places its samples (steps 07, 08): the pattern of a pixel's
+ * camera samples and of an area light's light samples, the seed that keys
+ * them, and the threshold of adaptive sampling (0: off). The command line
+ * sets it (--sampler, --seed, --adaptive). */
+typedef struct Sampler {
+  SamplerKind kind;
+  uint32_t seed;
+  float adaptive;
+} Sampler;
+
 /* Parse a sampler name ("center", "grid", "random", "jitter", "sobol"). */
 bool sampler_parse(const char *name, SamplerKind *out);
 

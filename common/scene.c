@@ -15,6 +15,7 @@ void scene_init(Scene *scene)
   scene->height = 600;
   scene->samples = 1;
   scene->light_samples = 1;
+  scene->sampler = (Sampler){.kind = SAMPLER_CENTER, .seed = 1};
   camera_init(&scene->camera, vec_make(0.0f, 0.0f, 0.0f), vec_make(0.0f, 0.0f, -1.0f),
               vec_make(0.0f, 1.0f, 0.0f), 45.0f, 1.0f, 800.0f / 600.0f);
 }
@@ -136,6 +137,7 @@ static void analyze(Scene *scene)
 bool scene_prepare(Scene *scene, unsigned features)
 {
   memset(&scene->info, 0, sizeof scene->info);
+  scene->info.shadows = (features & SCENE_SHADOWS) != 0;
   scene->n_instances = scene->n_shapes; /* in case of a second call */
   scene->index = NULL;                  /* built over the instances of a first call */
   if (!(features & SCENE_AMBIENT) && !vec_is_zero(scene->ambient)) {
@@ -209,20 +211,34 @@ const char *scene_shape_name(ShapeType shape)
   return (unsigned)shape < SHAPE_COUNT ? names[shape] : "?";
 }
 
-bool scene_intersect(const Scene *scene, Ray r, float tmax, Hit *hit)
+const Instance *scene_closest(const Scene *scene, const Ray *r, float *tmax)
 {
+  if (scene->index)
+    return scene->index->closest(scene, r, tmax);
   const Instance *best = NULL;
-  if (scene->index) {
-    best = scene->index->closest(scene, &r, &tmax);
-  } else {
-    for (int k = 0; k < scene->n_instances; k++) {
-      float t = scene_instance_hit_t(&scene->instances[k], r, tmax);
-      if (t < tmax) {
-        tmax = t;
-        best = &scene->instances[k];
-      }
+  for (int k = 0; k < scene->n_instances; k++) {
+    float t = scene_instance_hit_t(&scene->instances[k], *r, *tmax);
+    if (t < *tmax) {
+      *tmax = t;
+      best = &scene->instances[k];
     }
   }
+  return best;
+}
+
+bool scene_any(const Scene *scene, const Ray *r, float tmax)
+{
+  if (scene->index)
+    return scene->index->any(scene, r, tmax);
+  for (int k = 0; k < scene->n_shapes; k++)
+    if (scene_instance_hit_t(&scene->instances[k], *r, tmax) < tmax)
+      return true;
+  return false;
+}
+
+bool scene_intersect(const Scene *scene, Ray r, float tmax, Hit *hit)
+{
+  const Instance *best = scene_closest(scene, &r, &tmax);
   if (!best)
     return false;
   instance_hit_fill(best, r, tmax, hit);
@@ -231,10 +247,5 @@ bool scene_intersect(const Scene *scene, Ray r, float tmax, Hit *hit)
 
 bool scene_occluded(const Scene *scene, Ray r, float tmax)
 {
-  if (scene->index)
-    return scene->index->any(scene, &r, tmax);
-  for (int k = 0; k < scene->n_shapes; k++)
-    if (scene_instance_hit_t(&scene->instances[k], r, tmax) < tmax)
-      return true;
-  return false;
+  return scene_any(scene, &r, tmax);
 }

@@ -9,6 +9,7 @@
 #include "camera.h"
 #include "light.h"
 #include "material.h"
+#include "sampler.h"
 #include "shapes.h"
 
 /* The kinds of shape an instance may be, one per line of SHAPE_REGISTRY
@@ -40,11 +41,14 @@ enum SceneFeature {
   SCENE_LIGHT_SHAPES = 1u << 3,   /* lights the camera sees (step 06) */
   SCENE_SAMPLES = 1u << 4,        /* several samples per pixel (step 07) */
   SCENE_AREA_LIGHTS = 1u << 5,    /* area lights and light_samples (step 08) */
+  SCENE_SHADOWS = 1u << 6,        /* shadows (step 05): without it, the
+                                   * shading traces no shadow ray */
 };
 
 /* What scene_prepare found the scene needs, so renderers skip the rest. */
 typedef struct SceneInfo {
   bool ambient;        /* ambient light times some ambient colour is non-zero */
+  bool shadows;        /* the step casts shadows (SCENE_SHADOWS) */
   unsigned ignored;    /* SceneFeature bits present in the scene but not rendered */
 } SceneInfo;
 
@@ -75,6 +79,8 @@ typedef struct Scene {
   vec3s background;        /* colour of rays that hit nothing (default 0) */
   int samples;             /* camera samples per pixel (default 1) */
   int light_samples;       /* samples per area light (default 1) */
+  Sampler sampler;         /* where the samples go (default: centre, seed 1,
+                            * not adaptive) */
   Material *materials;
   int n_materials;
   Light *lights;
@@ -122,6 +128,14 @@ bool scene_prepare(Scene *scene, unsigned features);
  * missed: its shape's name_hit_t (the student's sphere_hit_t, plane_hit_t;
  * the given quad_hit_t, disc_hit_t, ...). */
 float scene_instance_hit_t(const Instance *inst, Ray r, float tmax);
+
+/* The query table's answers (scene->index's, or without one every instance
+ * tested in order): the closest instance with t in (0, *tmax), *tmax becoming
+ * its distance, NULL when none; whether some lit shape lies on the ray with t
+ * in (0, tmax). What scene_intersect and scene_occluded ask; a wrapper around
+ * the table (the render's counting, --trace's recording) answers with them. */
+const Instance *scene_closest(const Scene *scene, const Ray *r, float *tmax);
+bool scene_any(const Scene *scene, const Ray *r, float tmax);
 
 /* Closest hit with t in (0, tmax) among all instances (lit shapes and lights'
  * shapes). False when the ray hits nothing. */

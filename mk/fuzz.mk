@@ -27,7 +27,7 @@ FUZZ_STEP    := steps/08-area-lights
 # the targets (tests/fuzz/fuzz.h).
 FUZZ_STEP_MAIN := -Dmain=fuzz_step08_main -Dapp_run=fuzz_app_run -include tests/fuzz/fuzz.h \
                   -I$(FUZZ_STEP)
-FUZZ_LIB_SRC := $(filter-out common/app/app.c,$(COMMON_SRC)) $(FUZZ_STEP)/shade.c \
+FUZZ_LIB_SRC := $(filter-out common/app/app.c,$(COMMON_SRC)) \
                 tests/fuzz/targets.c
 FUZZ_LIB_OBJ := $(FUZZ_LIB_SRC:%.c=$(FUZZ_BUILD)/obj/%.o) $(FUZZ_BUILD)/obj/step08-main.o
 

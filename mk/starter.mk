@@ -1,18 +1,9 @@
 # The starter tree as a student meets it, and the checks that the tree says
 # what it does (docs/instructors.md, "Checks of the starter").
-#   make carry N        copy your code of the steps below N into steps N .. 8
 #   make check-starter  the starter builds, fails exactly the unwritten steps,
 #                       and passes steps 1..K once a student wrote them
 #   make check-refs     every file and doc section a source or test cites exists
 #   make check-images   the reference images are what make regen renders now
-
-# make carry N  (or N=5)
-ifeq (carry,$(firstword $(MAKECMDGOALS)))
-  N ?= $(word 2,$(MAKECMDGOALS))
-  $(eval $(word 2,$(MAKECMDGOALS)):;@:)
-endif
-carry:
-	@tools/carry.sh $(N)
 
 # FULL=1: every step's test at every stage (the default: step K and K+1).
 check-starter:
@@ -28,4 +19,4 @@ $(BUILD)/bin/imgcmp: $(BUILD)/obj/tools/imgcmp.o $(LIBCOMMON)
 	@echo "LD $@"
 	@$(CC) $(CFLAGS) $(LDFLAGS) $^ $(LDLIBS) -o $@
 
-.PHONY: carry check-starter check-refs check-images
+.PHONY: check-starter check-refs check-images

@@ -5,6 +5,7 @@
 #define RT_SHADOW_SCENE_H
 
 #include "check.h"
+#include "counting.h"
 #include "shade.h"
 
 #define DOC "docs/05-shadows.md, \"What you write\""
@@ -56,7 +57,7 @@ static inline void add_directional(Scene *s, vec3s dir, vec3s irradiance)
 
 static inline void prepare(Scene *s)
 {
-  cr_assert(scene_prepare(s, SCENE_CAMERA | SCENE_LIGHTS), "out of memory");
+  cr_assert(scene_prepare(s, SCENE_CAMERA | SCENE_LIGHTS | SCENE_SHADOWS), "out of memory");
 }
 
 #endif

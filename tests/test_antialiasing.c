@@ -149,7 +149,7 @@ static const char ROW_SCENE[] =
 Test(antialiasing, every_pixel_takes_its_own_sample_positions)
 {
   const char *kinds[] = {"random", "jitter", "sobol"};
-  Check c = CHECK("pixel (--adaptive 0): sampler_pattern keyed by ctx->pixel", DOC_KEYS);
+  Check c = CHECK("pixel_sampled (--adaptive 0): sampler_pattern keyed by the pixel", DOC_KEYS);
   for (int s = 0; s < 3; s++)
     for (int seed = 1; seed <= 3; seed++) {
       char args[128], tag[64];
@@ -241,6 +241,16 @@ static double mrays(const char *summary)
   return atof(at + 6);
 }
 
+/* The summary's "N spp": the camera samples traced per pixel. */
+static double spp(const char *summary)
+{
+  const char *at = strstr(summary, " spp, ");
+  cr_assert(at, "no summary line: '%s'", summary);
+  while (at > summary && at[-1] != ' ')
+    at--;
+  return atof(at);
+}
+
 /* An 800 x 400 film of background only: every pixel's corners and centre
  * agree, so it traces its centre and shares its corners with its neighbours
  * (traced once per 16 x 16 tile): about 2 rays per pixel, 0.68 M for 0.32 M
@@ -255,9 +265,13 @@ Test(antialiasing, adaptive_costs_about_two_samples_where_the_picture_is_flat)
               sizeof summary));
   CHECK_THAT(&c, mrays(summary) <= 0.70, "a flat 800 x 400 picture, --samples 64 --adaptive "
              "0.01: expected at most 0.70 Mrays (about 2 per pixel), got %s", summary);
+  CHECK_THAT(&c, spp(summary) >= 2.0 && spp(summary) <= 2.2, "the same render: the summary's "
+             "spp is the samples traced per pixel, a corner shared by four pixels and the "
+             "centre (2 to 2.2), not the 64 asked for: got %s", summary);
   free(render("flat-off", empty, "--samples 64 --adaptive 0", &w, &h, summary, sizeof summary));
   CHECK_NEAR(&c, 20.48, mrays(summary), 0.005, "the same picture, --samples 64 --adaptive 0: "
              "Mrays (64 per pixel)");
+  CHECK_NEAR(&c, 64.0, spp(summary), 0.0, "the same render: spp (every sample traced)");
 }
 
 /* Two renders' floats and summary lines' ray counts are the same. */

@@ -1,10 +1,10 @@
 /* Unit tests of step 08's area lights (shade_area, shade_phong, shade_trace):
  * the estimate against Lambert's closed-form polygon irradiance (bias checked
- * over many seeds, through shade_phong and shade_area), a tiny light
- * against a point light, one-sidedness, light patterns keyed by pixel and
- * camera sample (also through the step's binary), and the radiance the camera
- * sees. docs/08-area-lights.md. */
+ * over many seeds, through shade_area and shade_phong), a tiny light
+ * against a point light, one-sidedness, light patterns keyed by the hit point
+ * (also through the step's binary), and the radiance the camera sees. docs/08-area-lights.md. */
 #include "check.h"
+#include "counting.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -15,8 +15,9 @@
 #include "rng.h"
 #include "sampler.h"
 #include "shade.h"
-enum { ALL_FEATURES = SCENE_CAMERA | SCENE_LIGHTS | SCENE_AMBIENT | SCENE_LIGHT_SHAPES |
-                      SCENE_SAMPLES | SCENE_AREA_LIGHTS };
+
+enum { ALL_FEATURES = SCENE_CAMERA | SCENE_LIGHTS | SCENE_SHADOWS | SCENE_AMBIENT |
+                      SCENE_LIGHT_SHAPES | SCENE_SAMPLES | SCENE_AREA_LIGHTS };
 
 /* A white diffuse floor (y = 0, instance 0) under whatever `lights` says:
  * Phong then returns the irradiance E = sum L_i (n . l) itself. */
@@ -45,32 +46,41 @@ static Hit floor_hit(const Scene *s, float x, float z)
 /* The eye the tests shade toward. */
 static const vec3s EYE = {.x = 0.0f, .y = 1.0f, .z = 5.0f};
 
-/* The red channel of shade_phong at `h` for
- * seed, light samples and pattern; pixel 7, camera sample 0. */
+/* `s` with n light samples of pattern `kind` keyed by `seed`. */
+static Scene with(const Scene *s, uint32_t seed, int n, int kind)
+{
+  Scene w = *s;
+  w.light_samples = n;
+  w.sampler = (Sampler){.kind = (SamplerKind)kind, .seed = seed};
+  return w;
+}
+
+/* The red channel of shade_phong at `h` for seed, light samples and
+ * pattern; *rays (when not NULL): the queries it asked. */
 static double estimate(const Scene *s, const Hit *h, uint32_t seed, int n, int kind,
                        uint64_t *rays)
 {
-  RenderSettings set = {.seed = seed, .sampler = (SamplerKind)kind};
-  RenderCtx ctx = {.set = &set, .pixel = 7, .sample = 0};
-  Scene with_n = *s; /* shade_phong takes scene->light_samples samples */
-  with_n.light_samples = n;
-  vec3s c = shade_phong(&with_n, h, EYE, &ctx);
+  Scene w = with(s, seed, n, kind);
+  CountingTable t;
+  Scene c = counted(&w, &t);
+  double e = shade_phong(&c, h, EYE).x;
   if (rays)
-    *rays = ctx.rays;
-  return c.x;
+    *rays = (uint64_t)t.queries;
+  return e;
 }
 
-/* The red channel of shade_area(light 0, n samples) itself: every shadow ray
- * traced, for pixel `pixel` and camera sample `sample`. */
+/* The red channel of shade_area(light 0) itself with n samples; *rays (when
+ * not NULL): the queries it asked. */
 static double area(const Scene *s, const Hit *h, uint32_t seed, int n, int kind,
-                   uint32_t pixel, uint32_t sample, uint64_t *rays)
+                   uint64_t *rays)
 {
-  RenderSettings set = {.seed = seed, .sampler = (SamplerKind)kind};
-  RenderCtx ctx = {.set = &set, .pixel = pixel, .sample = sample};
+  Scene w = with(s, seed, n, kind);
+  CountingTable t;
+  Scene c = counted(&w, &t);
   vec3s v = glms_vec3_normalize(glms_vec3_sub(EYE, h->p));
-  double e = shade_area(s, 0, h, v, n, &ctx).x;
+  double e = shade_area(&c, 0, h, v).x;
   if (rays)
-    *rays = ctx.rays;
+    *rays = (uint64_t)t.queries;
   return e;
 }
 
@@ -128,15 +138,15 @@ Test(area_light, lambert_reference_gives_pi_L_under_a_huge_light)
              "irradiance under a square light filling the sky, radiance 1 (pi)");
 }
 
-/* Mean and standard error over `seeds` seeds of shade_phong (skip = true)
+/* Mean and standard error over `seeds` seeds of shade_phong (phong = true)
  * or of shade_area. */
-static void seed_stats(const Scene *s, const Hit *h, int n, int kind, int seeds, bool skip,
+static void seed_stats(const Scene *s, const Hit *h, int n, int kind, int seeds, bool phong,
                        double *mean, double *se)
 {
   double sum = 0.0, sum2 = 0.0;
   for (int k = 0; k < seeds; k++) {
     uint32_t seed = 1000u + (uint32_t)k;
-    double e = skip ? estimate(s, h, seed, n, kind, NULL) : area(s, h, seed, n, kind, 7, 0, NULL);
+    double e = phong ? estimate(s, h, seed, n, kind, NULL) : area(s, h, seed, n, kind, NULL);
     sum += e;
     sum2 += e * e;
   }
@@ -161,13 +171,13 @@ Test(area_light, unoccluded_estimate_is_unbiased_against_lambert_formula)
   Check k = CHECK("shade_area", DOC_LIGHT);
   for (int q = 0; q < 3; q++)
     for (int kk = 0; kk < 3; kk++)
-      for (int skip = 0; skip < 2; skip++) {
+      for (int phong = 0; phong < 2; phong++) {
         Hit h = floor_hit(&s, pts[q][0], pts[q][1]);
         long double p[3] = {pts[q][0], 0, pts[q][1]};
         double ref = (double)lambert(v, p, n, L), mean, se;
-        int samples = skip ? 64 : 16;
-        seed_stats(&s, &h, samples, kinds[kk], 64, skip, &mean, &se);
-        const char *how = skip ? "shade_phong" : "shade_area";
+        int samples = phong ? 64 : 16;
+        seed_stats(&s, &h, samples, kinds[kk], 64, phong, &mean, &se);
+        const char *how = phong ? "shade_phong" : "shade_area";
         CHECK_NEAR(&k, ref, mean, 4.0 * se + 1e-5 * ref, "%s, %s, %d light samples, floor "
                    "point (%g, 0, %g) under a tilted light: mean over 64 seeds of the red "
                    "irradiance against Lambert's formula (4 standard errors)", how,
@@ -205,7 +215,7 @@ Test(area_light, regular_grid_converges_to_lambert_formula)
   double ref = (double)lambert(v, p, n, L);
   Hit h = floor_hit(&s, 0.5f, -0.2f);
   Check k = CHECK("shade_area", DOC_LIGHT);
-  CHECK_REL(&k, ref, area(&s, &h, 1, 1024, SAMPLER_GRID, 7, 0, NULL), 1e-4,
+  CHECK_REL(&k, ref, area(&s, &h, 1, 1024, SAMPLER_GRID, NULL), 1e-4,
             "grid 32 x 32 at floor point (0.5, 0, -0.2): red irradiance against Lambert's "
             "formula");
   scene_free(&s);
@@ -228,7 +238,7 @@ Test(area_light, tiny_light_is_a_point_light_with_cos_theta_light)
     long double cos_t = d[1] / sqrtl(r2); /* both cosines: light faces -y, floor +y */
     double ref = (double)(5.0L * cos_t * cos_t / r2);
     Hit h = floor_hit(&s, pts[q][0], pts[q][1]);
-    double e = area(&s, &h, 3, 16, SAMPLER_JITTER, 7, 0, NULL);
+    double e = area(&s, &h, 3, 16, SAMPLER_JITTER, NULL);
     CHECK_REL(&k, ref, e, 1e-3, "a 1 mm light, power 5, 2 above the floor, at floor point "
               "(%g, 0, %g): red, against P cos(theta_light) cos(theta_p) / r^2", pts[q][0],
               pts[q][1]);
@@ -257,13 +267,13 @@ Test(area_light, point_behind_the_light_gets_nothing)
   cr_assert(s.instances[1].shape == SHAPE_PLANE);
   uint64_t rays;
   Check k = CHECK("shade_area", DOC_LIGHT);
-  CHECK_NEAR(&k, 0.0, area(&s, &h, 1, 16, SAMPLER_JITTER, 7, 0, &rays), 0.0,
+  CHECK_NEAR(&k, 0.0, area(&s, &h, 1, 16, SAMPLER_JITTER, &rays), 0.0,
              "a ceiling point behind a one-sided light (it faces down, away): red");
   CHECK_INT(&k, 0, rays, "the same point: shadow rays traced (a sample that adds nothing "
             "needs none)");
   /* The floor below, in front of the light, does receive light. */
   Hit f = floor_hit(&s, 0.2f, 0.1f);
-  double lit = area(&s, &f, 1, 16, SAMPLER_JITTER, 7, 0, NULL);
+  double lit = area(&s, &f, 1, 16, SAMPLER_JITTER, NULL);
   CHECK_THAT(&k, lit > 0.1, "the floor point under the same light: red %g, expected more "
              "than 0.1", lit);
   scene_free(&s);
@@ -294,8 +304,8 @@ Test(area_light, a_half_hidden_light_gives_a_penumbra)
            "sphere center -0.5 1.5 0 radius 0.5 material white");
   load(&open, "light area corner -1 3 -0.5 edge1 2 0 0 edge2 0 0 1 power 6 6 6");
   Hit h = floor_hit(&s, 0.0f, 0.0f), ho = floor_hit(&open, 0.0f, 0.0f);
-  double part = area(&s, &h, 5, 16, SAMPLER_JITTER, 7, 0, NULL);
-  double lit = area(&open, &ho, 5, 16, SAMPLER_JITTER, 7, 0, NULL);
+  double part = area(&s, &h, 5, 16, SAMPLER_JITTER, NULL);
+  double lit = area(&open, &ho, 5, 16, SAMPLER_JITTER, NULL);
   Check k = CHECK("shade_area", DOC_LIGHT);
   CHECK_THAT(&k, part > 0.05 * lit && part < 0.95 * lit, "a floor point whose light a sphere "
              "half hides: red %g, expected between 5%% and 95%% of the unshadowed %g", part, lit);
@@ -303,28 +313,30 @@ Test(area_light, a_half_hidden_light_gives_a_penumbra)
   scene_free(&open);
 }
 
-/* The light pattern of one pixel and camera sample: shade_area with one
- * random light sample at an unshadowed point, where the red value moves with
- * the sample's place on the light. */
-Test(area_light, light_samples_are_keyed_by_pixel_and_camera_sample)
+/* The light pattern of one camera sample: shade_area with one random light
+ * sample at an unshadowed point, where the red value moves with the
+ * sample's place on the light. Points a few float steps apart (the hit
+ * points of different camera samples) each draw a pattern of their own; the
+ * same point, the same pattern. */
+Test(area_light, light_samples_are_keyed_by_the_hit_point)
 {
   Scene s;
   load(&s, "light area corner -1 3 -0.5 edge1 2 0 0 edge2 0 0.4 1 power 6 6 6");
   Hit h = floor_hit(&s, 0.4f, -0.3f);
   Check k = CHECK("shade_area (light_pattern)", DOC_KEYS);
   for (int kind = SAMPLER_RANDOM; kind < SAMPLER_COUNT; kind++) {
-    double first = area(&s, &h, 9, 1, kind, 7, 0, NULL);
-    int same_sample = 0, same_pixel = 0;
-    for (uint32_t q = 1; q < 16; q++) {
-      same_sample += area(&s, &h, 9, 1, kind, 7, q, NULL) == first;
-      same_pixel += area(&s, &h, 9, 1, kind, 7 + q, 0, NULL) == first;
+    double first = area(&s, &h, 9, 1, kind, NULL);
+    int same_point = 0;
+    for (int q = 1; q < 16; q++) {
+      Hit moved = h;
+      moved.p.x = nextafterf(h.p.x + (float)q * 1e-6f, INFINITY);
+      same_point += fabs(area(&s, &moved, 9, 1, kind, NULL) - first) <= 1e-4 * first;
     }
-    CHECK_INT(&k, 0, same_sample, "%s, 1 light sample, pixel 7: camera samples 1..15 that put "
-              "their light sample where camera sample 0 does (each camera sample needs its own "
-              "pattern: key it by ctx->sample)", sampler_name((SamplerKind)kind));
-    CHECK_INT(&k, 0, same_pixel, "%s, 1 light sample, camera sample 0: pixels 8..22 that put "
-              "their light sample where pixel 7 does (key it by ctx->pixel)",
-              sampler_name((SamplerKind)kind));
+    CHECK_INT(&k, 0, same_point, "%s, 1 light sample: points 1e-6 .. 1.5e-5 away that put "
+              "their light sample where the first point does (each hit point draws its own "
+              "pattern)", sampler_name((SamplerKind)kind));
+    CHECK_NEAR(&k, first, area(&s, &h, 9, 1, kind, NULL), 0.0, "%s, the same point twice",
+               sampler_name((SamplerKind)kind));
   }
   CHECK_DONE(&k);
   scene_free(&s);
@@ -335,8 +347,8 @@ Test(area_light, light_samples_are_keyed_by_pixel_and_camera_sample)
  * of a_half_hidden_light_gives_a_penumbra, the camera above the floor at
  * y = 1, below the sphere). With 64 camera samples and 1 light sample each,
  * the pixel averages 64 light samples, between 10% and 90% of the unshadowed
- * value, when each camera sample has its own (ctx->sample set by step 07's
- * pixel function); one shared light sample makes it all or nothing. */
+ * value, when each camera sample has its own (keyed by its hit point); one
+ * shared light sample makes it all or nothing. */
 Test(area_light, each_camera_sample_takes_its_own_light_samples)
 {
   const char *base = "film 1 1\n"
@@ -367,7 +379,7 @@ Test(area_light, each_camera_sample_takes_its_own_light_samples)
       free(rgb);
     }
   }
-  Check k = CHECK("pixel (ctx->sample) and shade_area", DOC_KEYS);
+  Check k = CHECK("shade_area (light_pattern)", DOC_KEYS);
   for (int seed = 0; seed < 3; seed++) {
     double frac = red[1][seed] / red[0][seed];
     CHECK_THAT(&k, frac > 0.1 && frac < 0.9, "a pixel on a penumbra, 64 camera samples of 1 "
@@ -383,14 +395,12 @@ Test(area_light, camera_sees_P_over_A_on_the_front_face_and_black_behind)
   Scene s;
   load(&s, "light area corner -1 3 -1 edge1 2 0 0 edge2 0 0 2 power 6 4 2");
   s.light_samples = 4;
-  RenderSettings set = {.seed = 1};
-  RenderCtx ctx = {.set = &set};
   Check k = CHECK("shade_trace", "docs/08-area-lights.md, \"The light\"");
   Ray up = {.o = vec_make(0.3f, 1.0f, 0.2f), .d = vec_make(0.0f, 1.0f, 0.0f)};
-  CHECK_VEC(&k, vec_make(1.5f, 1.0f, 0.5f), shade_trace(&s, up, &ctx), 0.0,
+  CHECK_VEC(&k, vec_make(1.5f, 1.0f, 0.5f), shade_trace(&s, up), 0.0,
             "a ray up into the front of a 2 x 2 light of power (6, 4, 2): P / A");
   Ray down = {.o = vec_make(0.3f, 6.0f, 0.2f), .d = vec_make(0.0f, -1.0f, 0.0f)};
-  CHECK_VEC(&k, glms_vec3_zero(), shade_trace(&s, down, &ctx), 0.0,
+  CHECK_VEC(&k, glms_vec3_zero(), shade_trace(&s, down), 0.0,
             "a ray down onto the back of the same light (one-sided): black");
   scene_free(&s);
 }

@@ -1,5 +1,5 @@
-/* Unit tests of step 04's Phong region (shade_phong_light, shade_phong), run
- * in steps 04-08, which all carry it: hand-checkable configurations at the
+/* Unit tests of step 04's Phong region (shade_phong_light, shade_phong,
+ * common/shade.c): hand-checkable configurations at the
  * origin with normal +y, in a scene with nothing that could cast a shadow.
  * docs/04-phong.md, "What you write". */
 #include "check.h"
@@ -156,8 +156,6 @@ typedef struct Setup {
   Plane floor;
   Instance inst;
   Hit hit;
-  RenderSettings set;
-  RenderCtx ctx;
 } Setup;
 
 static void setup(Setup *s, Material m, const Light *lights, int n_lights)
@@ -170,8 +168,6 @@ static void setup(Setup *s, Material m, const Light *lights, int n_lights)
   s->floor = plane_make(vec_make(0, 0, 0), vec_make(0, 1, 0));
   s->inst = (Instance){.shape = SHAPE_PLANE, .material = 0, .light = -1, .plane = s->floor};
   s->hit = floor_hit(&s->inst);
-  s->set = (RenderSettings){.threads = 1, .seed = 1};
-  s->ctx = (RenderCtx){.set = &s->set};
 }
 
 static Light point(float x, float y, float z, float pr, float pg, float pb)
@@ -187,7 +183,7 @@ Test(phong, lights_add_up)
   Setup s;
   Light L[2] = {point(0, 2, 0, 8, 4, 12), point(-3, 3, 0, 18, 36, 9)};
   setup(&s, (Material){.diffuse = vec_make(0.5f, 0.25f, 1.0f)}, L, 2);
-  vec3s c = shade_phong(&s.scene, &s.hit, vec_make(0, 5, 5), &s.ctx);
+  vec3s c = shade_phong(&s.scene, &s.hit, vec_make(0, 5, 5));
   double k = 1.0 / sqrt(2.0);
   Check ck = CHECK("shade_phong", DOC);
   check_rgb(&ck, (double[3]){1.0 + 0.5 * k, 0.25 + 0.5 * k, 3.0 + 0.5 * k}, c, DIFFUSE_REL,
@@ -202,7 +198,7 @@ Test(phong, view_direction_is_toward_the_eye)
   Setup s;
   Light L = point(-3, 3, 0, 18, 36, 9);
   setup(&s, (Material){.specular = vec_make(0.2f, 0.4f, 0.6f), .shininess = 50.0f}, &L, 1);
-  vec3s c = shade_phong(&s.scene, &s.hit, vec_make(30, 30, 0), &s.ctx);
+  vec3s c = shade_phong(&s.scene, &s.hit, vec_make(30, 30, 0));
   Check ck = CHECK("shade_phong", DOC);
   check_rgb(&ck, (double[3]){0.2, 0.8, 0.3}, c, lobe_rel(50.0f),
             "eye at (30, 30, 0) on the reflection of the light at (-3, 3, 0): "
@@ -218,7 +214,7 @@ Test(phong, directional_light)
   Light L = {.type = LIGHT_DIRECTIONAL, .direction = unit(0, -1, -1),
              .irradiance = vec_make(1, 2, 3)};
   setup(&s, (Material){.diffuse = vec_make(0.5f, 0.5f, 1.0f)}, &L, 1);
-  vec3s c = shade_phong(&s.scene, &s.hit, vec_make(0, 5, 0), &s.ctx);
+  vec3s c = shade_phong(&s.scene, &s.hit, vec_make(0, 5, 0));
   double k = 1.0 / sqrt(2.0);
   Check ck = CHECK("shade_phong", DOC);
   check_rgb(&ck, (double[3]){0.5 * k, k, 3.0 * k}, c, DIFFUSE_REL,
@@ -233,7 +229,7 @@ Test(phong, lights_behind_the_surface_add_nothing)
   setup(&s, (Material){.diffuse = vec_make(1, 1, 1), .specular = vec_make(1, 1, 1),
                        .shininess = 1.0f}, L, 2);
   /* The eye even sits on the reflection of the second light. */
-  vec3s c = shade_phong(&s.scene, &s.hit, vec_make(3, 0.001f, 0), &s.ctx);
+  vec3s c = shade_phong(&s.scene, &s.hit, vec_make(3, 0.001f, 0));
   Check ck = CHECK("shade_phong", DOC);
   check_rgb(&ck, (double[3]){0, 0, 0}, c, 0.0, "two point lights below the surface");
   scene_free(&s.scene);

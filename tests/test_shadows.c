@@ -28,10 +28,11 @@ static Hit floor_hit(const Scene *s, float x, float z)
 /* Step 05's answer for light k at hit h, and the shadow rays it traced. */
 static vec3s incident(const Scene *s, int k, const Hit *h, uint64_t *rays)
 {
-  RenderCtx ctx = {0};
+  CountingTable t;
+  Scene c = counted(s, &t);
   vec3s l;
-  vec3s li = shade_incident(s, &s->lights[k], h, &l, &ctx);
-  *rays = ctx.rays;
+  vec3s li = shade_incident(&c, &c.lights[k], h, &l);
+  *rays = (uint64_t)t.queries;
   return li;
 }
 
@@ -191,9 +192,8 @@ static void check_not_self_shadowed(Scene *s, vec3s centre, float size, const ch
     Hit h;
     if (!scene_intersect(s, r, INFINITY, &h))
       continue;
-    RenderCtx ctx = {0};
     vec3s l;
-    vec3s li = shade_incident(s, &s->lights[0], &h, &l, &ctx);
+    vec3s li = shade_incident(s, &s->lights[0], &h, &l);
     float n_dot_l = glms_vec3_dot(h.n, l);
     if (!(n_dot_l > 1e-6f))
       continue;
@@ -290,17 +290,16 @@ Test(shadows, phong_adds_only_the_unblocked_lights)
   add_sphere(&s, vec_make(1.5f, 2.0f, 0.0f), 0.5f); /* centred on the second segment */
   prepare(&s);
   Hit h = floor_hit(&s, 0.0f, 0.0f);
-  RenderCtx ctx = {0};
   Check c = CHECK_RELYING("shade_visible, ray_spawn (through shade_phong)", DOC,
                           "shade_phong_light, light_incident (step 04), sphere_hit_t, "
                           "plane_hit_t (step 02)");
   /* 0.5 * 1 * 1 from the first light; the second (0.5 * 0.8 = 0.4) is blocked. */
-  CHECK_VEC(&c, vec_make(0.5f, 0.5f, 0.5f), shade_phong(&s, &h, vec_make(0.0f, 5.0f, 5.0f), &ctx),
+  CHECK_VEC(&c, vec_make(0.5f, 0.5f, 0.5f), shade_phong(&s, &h, vec_make(0.0f, 5.0f, 5.0f)),
             1e-6, "floor point lit by a light above (0.5) and blocked from a second (0.4): "
             "shade_phong, the first light's term alone");
   /* shade_trace from above the floor at (0, 0, 0). */
   Ray r = {.o = vec_make(0.0f, 2.0f, 2.0f), .d = glms_vec3_normalize(vec_make(0.0f, -1.0f, -1.0f))};
-  CHECK_VEC(&c, vec_make(0.5f, 0.5f, 0.5f), shade_trace(&s, r, &ctx), 1e-6,
+  CHECK_VEC(&c, vec_make(0.5f, 0.5f, 0.5f), shade_trace(&s, r), 1e-6,
             "the same point seen by a camera ray: shade_trace");
   scene_free(&s);
 }
@@ -326,7 +325,7 @@ Test(saving, no_shadow_ray_behind_the_surface)
   for (int k = 0; k < 3; k++) {
     uint64_t rays;
     incident(&s, k, &h, &rays);
-    CHECK_INT(&c, 0, rays, "floor point, %s: shadow rays traced (ctx->rays)", what[k]);
+    CHECK_INT(&c, 0, rays, "floor point, %s: shadow rays traced (queries of the scene)", what[k]);
   }
   scene_free(&s);
 }

@@ -108,13 +108,12 @@ Test(shadows, agrees_with_the_lectures_closest_hit_method)
       if (!scene_intersect(&s, r, INFINITY, &h))
         continue;
       for (int li = 0; li < s.n_lights; li++) {
-        RenderCtx ctx = {0};
         vec3s l;
         float dist;
         light_incident(&s.lights[li], h.p, h.p_err, &l, &dist);
         if (!(glms_vec3_dot(h.n, l) > 0.0f) || dist == 0.0f)
           continue; /* behind the surface: the light adds nothing either way */
-        vec3s got = shade_incident(&s, &s.lights[li], &h, &l, &ctx);
+        vec3s got = shade_incident(&s, &s.lights[li], &h, &l);
         bool unclear;
         bool want = lecture_visible(&s, &h, l, dist, &unclear);
         if (unclear) {

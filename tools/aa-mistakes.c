@@ -16,19 +16,15 @@
 #include <string.h>
 
 /* Step 07's box filter, with the mistake: the sampler is keyed by pixel 0. */
-static vec3s pixel_same_numbers(const Scene *scene, const Film *film, int i, int j,
-                                RenderCtx *ctx)
+static vec3s pixel_same_numbers(const Scene *scene, const Film *film, int i, int j)
 {
-  const RenderSettings *set = ctx->set;
   FilmAccum acc = {0};
   for (int k = 0; k < scene->samples; k++) {
-    ctx->sample = (uint32_t)k;
-    ctx->samples++;
-    vec2s s = sampler_get(set->sampler, set->seed, 0, (uint32_t)k,
+    vec2s s = sampler_get(scene->sampler.kind, scene->sampler.seed, 0, (uint32_t)k,
                           (uint32_t)scene->samples);
     Ray r = camera_ray(&scene->camera, ((float)i + s.x) / (float)film->width,
                        ((float)j + s.y) / (float)film->height);
-    film_accum_add(&acc, shade_trace(scene, r, ctx));
+    film_accum_add(&acc, shade_trace(scene, r));
   }
   return film_accum_mean(&acc);
 }

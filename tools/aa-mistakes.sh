@@ -12,11 +12,11 @@ make --no-print-directory build/bin/07-antialiasing >/dev/null
 eval "$(make --no-print-directory -s print-flags)"
 # shellcheck disable=SC2086
 $CC $CFLAGS $LDFLAGS -Isteps/07-antialiasing \
-  tools/aa-mistakes.c steps/07-antialiasing/shade.c build/obj/gen/07-antialiasing-scene.o \
+  tools/aa-mistakes.c build/obj/gen/07-antialiasing-scene.o \
   build/libcommon.a $LDLIBS -o $bin/aa-mistakes
 # shellcheck disable=SC2086
 $CC $CFLAGS -Wno-missing-prototypes $LDFLAGS -Isteps/07-antialiasing \
-  -Ibuild/gen/07-antialiasing -include step_manifest.h tools/aa-samples.c steps/07-antialiasing/shade.c build/obj/gen/07-antialiasing-scene.o \
+  -Ibuild/gen/07-antialiasing -include step_manifest.h tools/aa-samples.c build/obj/gen/07-antialiasing-scene.o \
   build/libcommon.a $LDLIBS -o $bin/aa-samples
 img=${OUT:-docs/img}
 mkdir -p "$img"

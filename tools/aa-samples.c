@@ -1,6 +1,6 @@
 /* Where step 07's adaptive sampling puts its samples, for the picture of
- * docs/07-antialiasing.md, "Adaptive sampling". Not a step: it compiles step
- * 07's main.c in (so the pixels are the step's own), counts every distinct
+ * docs/07-antialiasing.md, "Adaptive sampling". Not a step: it compiles
+ * common/antialias.c in (so the pixels are the step's own), counts every distinct
  * point render_point traces inside each pixel's square (its bottom and left
  * sides included: each point counts once, in one pixel), and draws the
  * counts: dark blue 2 (a corner and the centre), up to white at the largest
@@ -13,17 +13,18 @@
 #include "app/app.h"
 #include "app/image.h"
 #include "app/parser.h"
+#include "app/render.h"
 #include "sampler.h"
 #include "shade.h"
 
-/* The step's main.c below calls render_point: it calls this instead, which
+/* common/antialias.c below calls render_point: it calls this instead, which
  * counts the point and calls render_point. */
-static vec3s counting_point(const Scene *scene, RenderCtx *ctx, RenderPointFn colour,
+static vec3s counting_point(const Scene *scene, const Film *film, RenderPointFn colour,
                             uint32_t x, uint32_t y);
 #define render_point counting_point
-#define main step07_main
-#include "../steps/07-antialiasing/main.c"
-#undef main
+#define antialias_pixel pixel
+#include "../common/antialias.c"
+#undef antialias_pixel
 #undef render_point
 
 /* The distinct lattice points traced (one thread: no locking), as x << 32 | y
@@ -49,11 +50,11 @@ static void count(uint32_t x, uint32_t y)
     counts[j * film_w + i]++;
 }
 
-static vec3s counting_point(const Scene *scene, RenderCtx *ctx, RenderPointFn colour,
+static vec3s counting_point(const Scene *scene, const Film *film, RenderPointFn colour,
                             uint32_t x, uint32_t y)
 {
   count(x, y);
-  return render_point(scene, ctx, colour, x, y);
+  return render_point(scene, film, colour, x, y);
 }
 
 /* Dark blue at 2 samples, through red and yellow, to white at `top`. */
@@ -79,12 +80,13 @@ int main(int argc, char **argv)
   scene.height = film_h = atoi(argv[2]);
   scene.samples = atoi(argv[3]);
   if (film_w < 1 || film_h < 1 || scene.samples < 1 ||
-      !scene_prepare(&scene, SCENE_CAMERA | SCENE_LIGHTS | SCENE_AMBIENT |
+      !scene_prepare(&scene, SCENE_CAMERA | SCENE_LIGHTS | SCENE_SHADOWS | SCENE_AMBIENT |
                                  SCENE_LIGHT_SHAPES | SCENE_SAMPLES) ||
       !accel_build(&scene))
     return 1;
-  RenderSettings set = {.threads = 1, .seed = 1, .sampler = SAMPLER_SOBOL,
-                        .adaptive = strtof(argv[4], NULL)};
+  scene.sampler = (Sampler){.kind = SAMPLER_SOBOL, .seed = 1,
+                            .adaptive = strtof(argv[4], NULL)};
+  RenderSettings set = {.threads = 1};
   Film film;
   seen = calloc((size_t)1 << SEEN_BITS, sizeof *seen);
   counts = calloc((size_t)film_w * (size_t)film_h, sizeof *counts);

@@ -26,8 +26,8 @@ IMAGE_TESTS='^(image::step_matches_its_reference_image|reference_image::.*)$'
 # region of the same step calls. "STEP NAME=OTHER": stubbing NAME stubs OTHER
 # of the same file too (what the starter does anyway).
 TOGETHER=(
-  "07 point_colour,pixel_sampled,colours_differ,at,square_mean=pixel"
-  "08 light_pattern,area_incident=shade_area"
+  "07 point_colour,pixel_sampled,colours_differ,at,square_mean=antialias_pixel"
+  "08 area_incident=shade_area"
 )
 
 # Later steps that do not use a region: "STEP NAME STEPS reason". With the

@@ -2,9 +2,9 @@
 # The starter tree, played by a student (make check-starter; CI runs it):
 #   1. make starter (every step stubbed) builds, every TODO line cites a doc
 #      section that exists, and make test-step K fails for every K;
-#   2. then, for K = 1 .. 8, the student writes step K (the solution's code,
-#      put where a student writes it: tools/carry.sh --solution) and runs
-#      make carry K+1: make test-step K must pass and make test-step K+1 fail.
+#   2. then, for K = 1 .. 8, the student writes step K's regions, each once
+#      where the starter has its TODO line (the solution's code: write_step):
+#      make test-step K must pass and make test-step K+1 fail.
 #      --full: every step at every stage (steps 1..K pass, K+1..8 fail);
 #   3. with every step written, the student's make test passes (step 8's
 #      test-step is part of it).
@@ -42,13 +42,28 @@ test_step() {
   fi
 }
 
+# write_step K: step K's regions written as the student writes them: each
+# file that holds a region made again from the solution with the steps up to
+# K solved (tools/stub.awk, as make starter N=K+1 writes it); a file left as
+# it was when nothing in it changed.
+declare -A step_name
+for s in "$top"/steps/[0-9][0-9]-*/; do s=${s%/}; s=${s##*/}; step_name[${s%%-*}]=$s; done
+names=$(for k in "${!step_name[@]}"; do printf '%s=%s ' "$k" "${step_name[$k]}"; done)
+write_step() {
+  local f new
+  while IFS= read -r f; do
+    new=$(awk -v keep_below=$(($1 + 1)) -v names="$names" -f "$top/tools/stub.awk" "$top/$f") || return 1
+    [ "$new" = "$(cat "$dir/$f")" ] || printf '%s\n' "$new" > "$dir/$f"
+  done < <(cd "$top" && grep -l -r --include='*.[ch]' 'BEGIN SOLUTION' common steps | sort)
+}
+
 tools_starter=$top/tools/starter.sh
 "$tools_starter" "$dir" >/dev/null || exit 1
 dir=$(cd "$dir" && pwd)
 if ! make -C "$dir" -j2 build >"$log" 2>&1; then
   fail "the starter does not build:"; tail -n 20 "$log" | sed 's/^/    /'; exit 1
 fi
-say "the starter builds ($(grep -c . "$dir/tools/starter-regions.tsv") regions stubbed)"
+say "the starter builds ($(grep -rhoE --include='*.[ch]' '/\* BEGIN step [0-9]{2}: ' "$dir/common" "$dir/steps" | grep -c .) regions stubbed)"
 # The TODO lines' doc sections (the rest is make check-refs's, in the tree).
 (cd "$dir" && tools/check-refs.sh >"$log" 2>&1)
 todo_refs=$(while IFS=: read -r _ file line rest; do
@@ -62,18 +77,15 @@ for k in 1 2 3 4 5 6 7 8; do test_step $k fail; done
 [ $bad -eq $before ] && say "no step written: make test-step 1 .. 8 all fail"
 
 for stage in 1 2 3 4 5 6 7 8; do
-  (cd "$dir" && tools/carry.sh --solution "$top" $stage) || { fail "could not write step $stage's regions"; break; }
+  write_step $stage || { fail "could not write step $stage's regions"; break; }
   before=$bad
-  if [ $stage -lt 8 ]; then
-    (cd "$dir" && tools/carry.sh $((stage + 1)) >"$log" 2>&1) || { fail "make carry $((stage + 1)):"; sed 's/^/    /' "$log"; break; }
-  fi
   if [ -n "$full" ]; then
     for k in 1 2 3 4 5 6 7 8; do test_step $k "$([ $k -le $stage ] && echo pass || echo fail)"; done
     [ $bad -eq $before ] && say "steps 1..$stage written: make test-step 1..$stage pass, the others fail"
   elif [ $stage -lt 8 ]; then
     test_step $stage pass
     test_step $((stage + 1)) fail
-    [ $bad -eq $before ] && say "steps 1..$stage written, make carry $((stage + 1)): make test-step $stage passes, $((stage + 1)) fails"
+    [ $bad -eq $before ] && say "steps 1..$stage written: make test-step $stage passes, $((stage + 1)) fails"
   fi
   [ $stage -eq 8 ] && all_written=1
 done

@@ -1,7 +1,7 @@
 /* Shadow tests the steps do not use: the lecture's closest-hit version (to
  * time it against step 05's any-hit query) and the typical mistakes pictured
  * in docs/05-shadows.md and docs/06-ambient.md. Not a step; shading as in
- * steps/06-ambient/shade.c, only the visibility test changes.
+ * common/shade.c at step 06, only the visibility test changes.
  * Usage: build/bin/mistakes VARIANT [the steps' options], VARIANT one of
  * lecture, closest, no-offset, epsilon=E, no-tmax, light-shadows. */
 #include "app/app.h"
@@ -25,8 +25,7 @@ static float epsilon;
 
 /* Is light k visible from the hit? Step 05 is: n.l > 0, then
  * !scene_occluded(scene, ray_spawn(hit, l), dist * (1 - 2^-20)). */
-static bool visible(const Scene *scene, int k, const Hit *hit, vec3s l, float dist,
-                    RenderCtx *ctx)
+static bool visible(const Scene *scene, int k, const Hit *hit, vec3s l, float dist)
 {
   if (variant != LECTURE && !(glms_vec3_dot(hit->n, l) > 0.0f))
     return true; /* no ray: the Phong loop skips this light anyway */
@@ -35,7 +34,6 @@ static bool visible(const Scene *scene, int k, const Hit *hit, vec3s l, float di
     r.o = hit->p;
   if (variant == EPSILON)
     r.o = glms_vec3_add(hit->p, glms_vec3_scale(hit->n, epsilon));
-  ctx->rays++;
   float tmax = dist * (1.0f - 0x1p-20f);
   Hit first;
   switch (variant) {
@@ -53,7 +51,7 @@ static bool visible(const Scene *scene, int k, const Hit *hit, vec3s l, float di
 }
 
 /* Step 06's Phong with ambient, the visibility test above. */
-static vec3s phong(const Scene *scene, const Hit *hit, vec3s eye, RenderCtx *ctx)
+static vec3s phong(const Scene *scene, const Hit *hit, vec3s eye)
 {
   const Material *m = &scene->materials[hit->inst->material];
   vec3s c = scene->info.ambient ? glms_vec3_mul(m->ambient, scene->ambient) : glms_vec3_zero();
@@ -62,7 +60,7 @@ static vec3s phong(const Scene *scene, const Hit *hit, vec3s eye, RenderCtx *ctx
     vec3s l;
     float dist;
     vec3s li = light_incident(&scene->lights[k], hit->p, hit->p_err, &l, &dist);
-    if (!visible(scene, k, hit, l, dist, ctx))
+    if (!visible(scene, k, hit, l, dist))
       continue;
     float n_dot_l = glms_vec3_dot(hit->n, l);
     if (!(n_dot_l > 0.0f))
@@ -75,17 +73,16 @@ static vec3s phong(const Scene *scene, const Hit *hit, vec3s eye, RenderCtx *ctx
   return c;
 }
 
-static vec3s pixel(const Scene *scene, const Film *film, int i, int j, RenderCtx *ctx)
+static vec3s pixel(const Scene *scene, const Film *film, int i, int j)
 {
   vec2s s = film_sample(film, i, j);
   Ray ray = camera_ray(&scene->camera, s.x, s.y);
   Hit hit;
-  ctx->rays++;
   if (!scene_intersect(scene, ray, INFINITY, &hit))
     return scene->background;
   if (hit.inst->light >= 0)
     return glms_vec3_divs(scene->lights[hit.inst->light].power, hit.t * hit.t);
-  return phong(scene, &hit, ray.o, ctx);
+  return phong(scene, &hit, ray.o);
 }
 
 static bool parse_variant(const char *arg)
@@ -117,7 +114,8 @@ int main(int argc, char **argv)
   const Step step = {
       .name = "mistakes",
       .summary = "Step 06's shading with another shadow test (docs/05-shadows.md).",
-      .features = SCENE_CAMERA | SCENE_LIGHTS | SCENE_AMBIENT | SCENE_LIGHT_SHAPES,
+      .features = SCENE_CAMERA | SCENE_LIGHTS | SCENE_SHADOWS | SCENE_AMBIENT |
+                  SCENE_LIGHT_SHAPES,
       .pixel = pixel,
   };
   return app_run(argc - 1, argv + 1, &step);

@@ -1,8 +1,7 @@
 #!/usr/bin/env bash
 # Write the student starter tree: the tracked files (git ls-files) copied to
 # DIR, every solution region replaced by a TODO(step NN) line and its stub
-# between /* BEGIN step NN: FUNCTION */ and /* END step NN */ (tools/carry.sh
-# finds the student's code there).
+# between /* BEGIN step NN: FUNCTION */ and /* END step NN */.
 # Usage: tools/starter.sh DIR [N]   (N: keep the solutions of steps below N)
 # docs/instructors.md, "The starter tree", explains the regions and what a student gets.
 set -euo pipefail
@@ -66,14 +65,6 @@ grep -q -- '^WERROR .*-Wno-error=unused-parameter' "$tmp/tree/Makefile" || {
 # Its consecutive-step diffs show the stubs, not the solutions.
 if [ -x "$tmp/tree/tools/diffs.sh" ]; then
   (cd "$tmp/tree" && tools/diffs.sh write $(ls -d steps/[0-9][0-9]-* | sed 's|steps/||') >/dev/null)
-fi
-
-# The regions it wrote, one line each (FILE STEP KEY): tools/carry.sh checks
-# the student's markers against this list before it copies anything.
-if [ -f "$tmp/tree/tools/carry.awk" ]; then
-  (cd "$tmp/tree" && for f in $(grep -l -r --include='*.[ch]' -E '/\* BEGIN step [0-9]{2}: ' common steps | sort); do
-     awk -v mode=list -f tools/carry.awk "$f" | awk -F'\t' -v f="$f" '{ print f "\t" $3 "\t" $4 }'
-   done > tools/starter-regions.tsv)
 fi
 
 rm -rf "$dir"

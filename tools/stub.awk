@@ -1,5 +1,5 @@
 # The solution regions of a C source file, for tools/starter.sh,
-# tools/regions.sh, tools/check-regions.sh and tools/carry.sh
+# tools/regions.sh, tools/check-regions.sh and tools/check-starter.sh
 # (docs/instructors.md, "The starter tree"). A region is
 #   /* BEGIN SOLUTION step NN */ ...the solution... [/* HINT: ... */]
 #   [/* STUB: code */] /* END SOLUTION */
@@ -13,8 +13,7 @@
 #                          <indent>/* END step NN */
 #                        and a region of a step below keep_below by the same
 #                        markers around its solution (HINT and STUB lines
-#                        dropped): tools/carry.sh finds the student's code
-#                        between them. <what> is the region's HINT, which must
+#                        dropped). <what> is the region's HINT, which must
 #                        name NAME's function, else "complete FUNCTION" (a
 #                        region inside a function) or "write F1 and F2, or
 #                        helpers of your own" (a region at file scope).

@@ -40,15 +40,15 @@ int aov_term(int aov)
   return aov >= AOV_AMBIENT && aov <= AOV_SPECULAR ? aov - AOV_AMBIENT : -1;
 }
 
-/* The pixel as usual, through the recorder; its value is the quantity. */
-static vec3s aov_pixel(const Scene *scene, const Film *film, int i, int j, RenderCtx *ctx)
+/* The pixel as usual, through the recorder (its table answering with the
+ * thread's counting scene); its value is the quantity. */
+static vec3s aov_pixel(RenderWatch *w, const Scene *scene, const Film *film,
+                       RenderPixelFn pixel, int i, int j)
 {
-  (void)scene;
-  Trace *t = (Trace *)ctx->trace; /* events are its first member */
+  Trace *t = (Trace *)w; /* the watch is its first member */
+  t->index.inner = scene;
   trace_begin_pixel(t);
-  t->ctx = ctx;
-  t->pixel(&t->scene, film, i, j, ctx);
-  trace_drain(t);
+  pixel(&t->scene, film, i, j);
   switch ((AovKind)t->aov) {
   case AOV_SHADOW:
     return glms_vec3_broadcast(t->shadow_rays ? (float)t->shadow_clear / (float)t->shadow_rays
@@ -63,7 +63,7 @@ static vec3s aov_pixel(const Scene *scene, const Film *film, int i, int j, Rende
 
 /* One recorder per thread, for `aov`; NULL (one line printed) when out of
  * memory. */
-static Trace **recorders(const Scene *scene, RenderPixelFn pixel, AovKind aov, int threads)
+static Trace **recorders(const Scene *scene, AovKind aov, int threads)
 {
   Trace **traces = calloc((size_t)threads, sizeof *traces);
   bool ok = traces != NULL;
@@ -72,7 +72,7 @@ static Trace **recorders(const Scene *scene, RenderPixelFn pixel, AovKind aov, i
     ok = traces[k] && trace_init(traces[k], scene, TRACE_AOV);
     if (ok) {
       traces[k]->aov = (int)aov;
-      traces[k]->pixel = pixel;
+      traces[k]->watch.pixel = aov_pixel;
     }
   }
   if (ok)
@@ -93,19 +93,17 @@ bool aov_render(const Scene *scene, RenderPixelFn pixel, const RenderSettings *s
                 AovKind aov, Film *film, RenderStats *stats)
 {
   int threads = render_threads(set);
-  Trace **traces = recorders(scene, pixel, aov, threads);
-  TraceEvents **events = traces ? calloc((size_t)threads, sizeof *events) : NULL;
-  bool ok = events != NULL;
-  if (ok && aov_term(aov) >= 0) { /* unrecorded: the scene's own index */
-    Scene masked = traces[0]->masked[aov_term(aov)];
-    masked.index = scene->index;
-    render(&masked, film, pixel, set, stats);
+  Trace **traces = recorders(scene, aov, threads);
+  RenderWatch **watch = traces ? calloc((size_t)threads, sizeof *watch) : NULL;
+  bool ok = watch != NULL;
+  if (ok && aov_term(aov) >= 0) { /* unrecorded */
+    render(&traces[0]->masked[aov_term(aov)], film, pixel, set, stats);
   } else if (ok) {
     for (int k = 0; k < threads; k++)
-      events[k] = &traces[k]->events;
+      watch[k] = &traces[k]->watch;
     RenderSettings with = *set;
-    with.traces = events;
-    render(scene, film, aov_pixel, &with, stats);
+    with.watch = watch;
+    render(scene, film, pixel, &with, stats);
   } else if (traces) {
     fprintf(stderr, "aov: out of memory\n");
   }
@@ -114,7 +112,7 @@ bool aov_render(const Scene *scene, RenderPixelFn pixel, const RenderSettings *s
     free(traces[k]);
   }
   free(traces);
-  free(events);
+  free(watch);
   return ok;
 }
 

@@ -1,8 +1,8 @@
 /* --aov NAME: one quantity of the render as a picture (an "arbitrary output
  * variable"), for every step from 02: the hit's normal, depth and albedo, the
  * Phong terms one at a time, the fraction of shadow rays that reach their
- * light, the samples spent. Recorded by the trace hooks (common/app/trace.h)
- * while the step's own pixel function renders. README.md, "For students". */
+ * light, the samples spent. Recorded from the scene's query table
+ * (common/app/trace_record.h) while the step's own pixel function renders. README.md, "For students". */
 #ifndef RT_AOV_H
 #define RT_AOV_H
 

@@ -8,6 +8,7 @@
 
 #include "app/pack.h"
 #include "app/aov.h"
+#include "app/render.h"
 #include "app/cli.h"
 #include "app/image.h"
 #include "app/parser.h"
@@ -66,12 +67,16 @@ static bool override(const Step *step, const Options *o, Scene *scene)
   return true;
 }
 
-static void summary(const Step *step, const char *out, const Film *film, int samples,
+/* The summary line. spp: the camera samples traced per pixel, their mean
+ * under adaptive sampling (one per pixel before step 07). */
+static void summary(const Step *step, const char *out, const Film *film,
                     const RenderStats *st)
 {
   double mrays = (double)st->rays * 1e-6;
-  printf("%s: %s %dx%d, %d spp, %.2f Mrays in %.3f s (%.1f Mrays/s, %d thread%s%s)\n",
-         step->name, out, film->width, film->height, samples, mrays,
+  double spp = (step->features & SCENE_SAMPLES)
+                   ? (double)st->samples / ((double)film->width * film->height) : 1.0;
+  printf("%s: %s %dx%d, %.4g spp, %.2f Mrays in %.3f s (%.1f Mrays/s, %d thread%s%s)\n",
+         step->name, out, film->width, film->height, spp, mrays,
          st->seconds, st->seconds > 0.0 ? mrays / st->seconds : 0.0, st->threads,
          st->threads == 1 ? "" : "s", THREADS_BUILD_NOTE);
 }
@@ -99,7 +104,7 @@ static void other_args(int argc, char **argv, char *buf, size_t size)
 
 /* --trace X Y: one pixel's trace on stdout instead of a picture. */
 static int run_trace(int argc, char **argv, const Step *step, const Options *o,
-                     const Scene *scene, const RenderSettings *set)
+                     const Scene *scene)
 {
   if (o->out_path)
     fprintf(stderr, "%s: ignoring -o (--trace prints one pixel, writes no image)\n",
@@ -109,7 +114,7 @@ static int run_trace(int argc, char **argv, const Step *step, const Options *o,
   TraceRequest req = {.step = step->name, .features = step->features, .pixel = step->pixel,
                       .x = o->trace_x, .y = o->trace_y, .tonemap = o->tonemap,
                       .json = o->trace_json, .args = args};
-  if (trace_pixel(scene, set, &req, stdout))
+  if (trace_pixel(scene, &req, stdout))
     return 0;
   return o->trace_x < scene->width && o->trace_y < scene->height ? 1 : 2;
 }
@@ -131,7 +136,7 @@ static bool render_and_save(const Step *step, const Options *o, Scene *scene,
   }
   bool saved = image_save(out, film->width, film->height, film->rgb, tm);
   if (saved && !o->quiet)
-    summary(step, out, film, scene->samples, &st);
+    summary(step, out, film, &st);
   return saved;
 }
 
@@ -173,11 +178,11 @@ int app_run(int argc, char **argv, const Step *step)
   say_ignored(step, &(Options){.seed = 1, .adaptive = -1.0f}, scene.info.ignored);
   SamplerKind kind = SAMPLER_CENTER;
   sampler_parse(o.sampler ? o.sampler : step->sampler ? step->sampler : "center", &kind);
-  RenderSettings set = {.threads = o.threads, .seed = o.seed, .sampler = kind,
-                        .adaptive = o.adaptive >= 0.0f ? o.adaptive : step->adaptive,
-                        .progress = !o.quiet};
+  scene.sampler = (Sampler){.kind = kind, .seed = o.seed,
+                            .adaptive = o.adaptive >= 0.0f ? o.adaptive : step->adaptive};
+  RenderSettings set = {.threads = o.threads, .progress = !o.quiet};
   if (o.trace_x >= 0) {
-    int status = run_trace(argc, argv, step, &o, &scene, &set);
+    int status = run_trace(argc, argv, step, &o, &scene);
     pack_index_free(&scene);
     scene_free(&scene);
     return status;

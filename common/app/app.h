@@ -4,8 +4,8 @@
 #ifndef RT_APP_H
 #define RT_APP_H
 
-#include "app/render_point.h" /* steps 07, 08: adaptive sampling's lattice */
-#include "app/trace.h"        /* the hooks of --trace and --aov */
+#include "film.h"
+#include "scene.h"
 
 typedef struct Step {
   const char *name;      /* "04-phong" */
@@ -13,7 +13,9 @@ typedef struct Step {
   unsigned features;     /* SceneFeature bits the step renders */
   const char *sampler;   /* default sampler name, NULL when the step has none */
   float adaptive;        /* default --adaptive threshold, 0 = off */
-  RenderPixelFn pixel;   /* the step's per-pixel work */
+  /* The step's per-pixel work (app/render.h's RenderPixelFn): the colour of
+   * pixel (i, j), i from the left, j from the bottom. */
+  vec3s (*pixel)(const Scene *scene, const Film *film, int i, int j);
 } Step;
 
 /* The default scene text, compiled in from scenes/ by tools/scene2c.sh. */

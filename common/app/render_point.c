@@ -19,32 +19,37 @@ typedef struct MemoEntry {
 } MemoEntry;
 
 struct RenderMemo {
+  uint32_t tile; /* tiles started, from 1: entry.tile 0 is never current */
   MemoEntry e[MEMO_SIZE];
 };
 
-vec3s render_point(const Scene *scene, RenderCtx *ctx, RenderPointFn colour, uint32_t x,
-                   uint32_t y)
+struct RenderMemo *render_memo_new(void)
 {
-  if (!ctx->memo)
-    ctx->memo = calloc(1, sizeof *ctx->memo);
-  MemoEntry none, *m = &none; /* no memory for a memo: compute every time */
-  uint32_t h = (x * 0x9e3779b1u) ^ (y * 0x85ebca77u);
-  if (ctx->memo)
-    m = &ctx->memo->e[(h ^ (h >> 15)) & (MEMO_SIZE - 1)];
-  else
-    none.tile = ctx->tile - 1u;
-  if (m->tile == ctx->tile && m->x == x && m->y == y)
-    return m->c;
-  uint32_t pixel = ctx->pixel, sample = ctx->sample;
-  uint32_t i = x / RENDER_LATTICE, j = y / RENDER_LATTICE;
-  ctx->pixel = j * ((uint32_t)scene->width + 1u) + i;
-  ctx->sample = (y % RENDER_LATTICE) * RENDER_LATTICE + x % RENDER_LATTICE;
-  /* x / 256 is exact in float: x < 2^24 for any film side up to 65535. */
-  vec3s c = colour(scene, (float)x / (float)RENDER_LATTICE, (float)y / (float)RENDER_LATTICE,
-                  ctx);
-  ctx->pixel = pixel;
-  ctx->sample = sample;
-  *m = (MemoEntry){.x = x, .y = y, .tile = ctx->tile, .c = c};
-  return c;
+  struct RenderMemo *memo = calloc(1, sizeof *memo);
+  if (memo)
+    memo->tile = 1;
+  return memo;
 }
 
+void render_memo_next_tile(struct RenderMemo *memo)
+{
+  if (memo)
+    memo->tile++;
+}
+
+vec3s render_point(const Scene *scene, const Film *film, RenderPointFn colour, uint32_t x,
+                   uint32_t y)
+{
+  struct RenderMemo *memo = film->memo;
+  MemoEntry none = {0}, *m = &none; /* no memo: compute every time */
+  uint32_t h = (x * 0x9e3779b1u) ^ (y * 0x85ebca77u);
+  if (memo)
+    m = &memo->e[(h ^ (h >> 15)) & (MEMO_SIZE - 1)];
+  if (memo && m->tile == memo->tile && m->x == x && m->y == y)
+    return m->c;
+  /* x / 256 is exact in float: x < 2^24 for any film side up to 65535. */
+  vec3s c = colour(scene, (float)x / (float)RENDER_LATTICE, (float)y / (float)RENDER_LATTICE);
+  if (memo)
+    *m = (MemoEntry){.x = x, .y = y, .tile = memo->tile, .c = c};
+  return c;
+}

@@ -5,7 +5,9 @@
 #ifndef RT_RENDER_POINT_H
 #define RT_RENDER_POINT_H
 
-#include "app/render.h"
+#include <stdint.h>
+#include "film.h"
+#include "scene.h"
 
 /* Adaptive sampling (step 07) places its samples on a lattice of
  * RENDER_LATTICE x RENDER_LATTICE points per pixel: lattice point (x, y) is
@@ -14,20 +16,23 @@
  * ones along. */
 enum { RENDER_LATTICE = 256 };
 
-/* A step's camera sample: the colour seen through the film point (x, y),
- * in pixels from the film's bottom-left corner (x in [0, width]). */
-typedef vec3s (*RenderPointFn)(const Scene *scene, float x, float y, RenderCtx *ctx);
+/* A camera sample: the colour seen through the film point (x, y), in pixels
+ * from the film's bottom-left corner (x in [0, width]). */
+typedef vec3s (*RenderPointFn)(const Scene *scene, float x, float y);
 
 /* The colour at lattice point (x, y), computed by `colour` the first time
- * the current tile asks for it and remembered for the rest of the tile (a
- * pixel corner serves the four pixels around it, a point on an edge the two
- * on either side). While `colour` runs, ctx->pixel and ctx->sample name the
- * point, not the pixel that asked: ctx->pixel = the corner (x, y) /
- * RENDER_LATTICE rounded down, as j * (width + 1) + i, and ctx->sample = its
- * place above that corner, (y % RENDER_LATTICE) * RENDER_LATTICE +
- * x % RENDER_LATTICE; both are restored afterwards. So a point's colour is a
- * function of its place alone, whichever pixel or thread asks first. */
-vec3s render_point(const Scene *scene, RenderCtx *ctx, RenderPointFn colour, uint32_t x,
+ * the current tile asks for it and remembered in film->memo for the rest of
+ * the tile (a pixel corner serves the four pixels around it, a point on an
+ * edge the two on either side); computed every time when film->memo is
+ * NULL. A point's colour is a function of its place alone. */
+vec3s render_point(const Scene *scene, const Film *film, RenderPointFn colour, uint32_t x,
                    uint32_t y);
+
+/* A memo for one thread (NULL when out of memory: render_point then
+ * computes every point), free()d by its owner; render_memo_next_tile
+ * forgets what the last tile computed, so that what a tile traces never
+ * depends on the tiles the thread did before. */
+struct RenderMemo *render_memo_new(void);
+void render_memo_next_tile(struct RenderMemo *memo);
 
 #endif

@@ -69,7 +69,7 @@ static void camera_query(Trace *t, Ray r, const Instance *hit, float t_hit)
     label(scene, hit, what, sizeof what);
   if (t->compact) {
     char key[24];
-    snprintf(key, sizeof key, "sample %u", t->sample);
+    snprintf(key, sizeof key, "sample %d", t->camera_rays - 1);
     TraceLine *line = trace_add(&t->lines, 0, key, TRACE_DOC_SAMPLE);
     trace_vec(line, "d", r.d);
     trace_word(line, "hit", what);
@@ -96,50 +96,44 @@ static void camera_query(Trace *t, Ray r, const Instance *hit, float t_hit)
     trace_vec(line, "background", scene->background);
 }
 
-/* A closest-hit query is a camera ray when it starts the pixel or a new
- * camera sample, or starts at the eye; otherwise it is a shadow test (the
- * lecture's closest-hit version). */
+/* A closest-hit query is a camera ray when it starts the pixel or starts at
+ * the eye, and is not asked while a light is shaded again; otherwise it is a
+ * shadow test (the lecture's closest-hit version). A shadow ray of the
+ * pixel's own run is --aov's; --trace records those of each light shaded
+ * again (app/trace_record.c). */
 static const Instance *traced_closest(const Scene *scene, const Ray *ray, float *tmax)
 {
   Ray r = *ray;
   Trace *t = ((const TraceIndex *)scene->index)->trace;
-  const Scene *in = &t->plain;
-  trace_drain(t);
-  if (t->mode == TRACE_CAPTURE)
-    return in->index ? in->index->closest(in, ray, tmax) : nearest(in, in->n_instances, r, tmax);
   float limit = *tmax;
-  const Instance *hit = in->index ? in->index->closest(in, ray, tmax)
-                                  : nearest(in, in->n_instances, r, tmax);
-  vec3s eye = in->camera.eye;
-  bool camera = t->camera_next || t->ctx->sample != t->sample ||
-                (r.o.x == eye.x && r.o.y == eye.y && r.o.z == eye.z);
-  if (!camera) {
-    shadow_query(t, r, limit, hit != NULL);
+  const Instance *hit = scene_closest(t->index.inner, ray, tmax);
+  vec3s eye = t->plain.camera.eye;
+  bool camera = !t->replaying && (t->camera_next || (r.o.x == eye.x && r.o.y == eye.y &&
+                                                     r.o.z == eye.z));
+  if (!camera) { /* blocked by a lit shape: lights' shapes never block */
+    if (t->replaying || t->mode == TRACE_AOV)
+      shadow_query(t, r, limit, hit && hit->material >= 0);
     return hit;
   }
+  trace_end_sample(t);
   t->camera_next = false;
   t->camera_rays++;
-  t->sample = t->ctx->sample;
+  t->eye = r.o;
   if (t->mode == TRACE_RECORD) {
     trace_flush_rays(t, 1);
     camera_query(t, r, hit, hit ? *tmax : INFINITY);
-  } else if (!hit) {
-    trace_sum_hit(t, NULL);
   }
+  Hit h;
+  trace_on_hit(t, hit && scene_intersect(&t->plain, r, limit, &h) ? &h : NULL);
   return hit;
 }
 
 static bool traced_any(const Scene *scene, const Ray *ray, float tmax)
 {
-  Ray r = *ray;
   Trace *t = ((const TraceIndex *)scene->index)->trace;
-  const Scene *in = &t->plain;
-  trace_drain(t);
-  float limit = tmax;
-  bool blocked = in->index ? in->index->any(in, ray, tmax)
-                           : nearest(in, in->n_shapes, r, &limit) != NULL;
-  if (t->mode != TRACE_CAPTURE)
-    shadow_query(t, r, tmax, blocked);
+  bool blocked = scene_any(t->index.inner, ray, tmax);
+  if (t->replaying || t->mode == TRACE_AOV)
+    shadow_query(t, *ray, tmax, blocked);
   return blocked;
 }
 
@@ -173,7 +167,7 @@ bool trace_init(Trace *t, const Scene *scene, TraceMode mode)
   t->camera_doc = TRACE_DOC_CAMERA;
   t->plain = t->scene = *scene;
   t->index = (TraceIndex){.base = {.closest = traced_closest, .any = traced_any},
-                          .inner = scene->index, .trace = t};
+                          .inner = scene, .trace = t};
   t->scene.index = &t->index.base;
   for (int k = 0; k < TERM_COUNT; k++) {
     size_t n = (size_t)scene->n_materials;
@@ -185,7 +179,7 @@ bool trace_init(Trace *t, const Scene *scene, TraceMode mode)
     }
     for (size_t m = 0; m < n; m++)
       t->materials[k][m] = mask(scene->materials[m], k);
-    t->masked[k] = t->scene;
+    t->masked[k] = *scene;
     t->masked[k].materials = t->materials[k];
     t->masked[k].background = glms_vec3_zero();
   }
@@ -196,7 +190,6 @@ void trace_free(Trace *t)
 {
   for (int k = 0; k < TERM_COUNT; k++) {
     free(t->materials[k]);
-    free(t->captured[k]);
   }
   trace_lines_free(&t->lines);
   trace_lines_free(&t->rays);

@@ -1,12 +1,12 @@
 /* --trace X Y (common/app/trace_pixel.h): pixel (X from the left, Y from the
  * top) rendered alone by the step's pixel function: first once on materials
- * that keep one term each (each light's term in each sample captured), then
- * once recorded (common/app/trace_record.c); then the pixel's colour and the
- * bytes its export writes. README.md, "For students"; docs/tracing.md. */
+ * that keep one term each, then once recorded (common/app/trace_record.c);
+ * then the pixel's colour and the bytes its export writes. README.md, "For students"; docs/tracing.md. */
 #include "app/trace_pixel.h"
 
 #include <stdlib.h>
 
+#include "app/render_point.h"
 #include "app/trace_index.h"
 
 static const char *tonemap_name(Tonemap tm)
@@ -62,8 +62,7 @@ static void print(const Trace *t, const Scene *scene, const TraceRequest *req, F
     fprintf(out, "]}\n");
 }
 
-bool trace_pixel(const Scene *scene, const RenderSettings *set, const TraceRequest *req,
-                 FILE *out)
+bool trace_pixel(const Scene *scene, const TraceRequest *req, FILE *out)
 {
   if (req->x >= scene->width || req->y >= scene->height) {
     fprintf(stderr, "%s: --trace: expected a pixel of the %dx%d picture (X 0 to %d from "
@@ -72,7 +71,7 @@ bool trace_pixel(const Scene *scene, const RenderSettings *set, const TraceReque
     return false;
   }
   Trace *t = trace_new();
-  if (!t || !trace_init(t, scene, TRACE_CAPTURE)) {
+  if (!t || !trace_init(t, scene, TRACE_RECORD)) {
     if (!t)
       fprintf(stderr, "trace: out of memory\n");
     free(t);
@@ -81,29 +80,25 @@ bool trace_pixel(const Scene *scene, const RenderSettings *set, const TraceReque
   if (!(req->features & SCENE_CAMERA))
     t->camera_doc = TRACE_DOC_FIXED_CAMERA;
   int i = req->x, j = scene->height - 1 - req->y;
-  Film film = {.width = scene->width, .height = scene->height};
-  RenderCtx ctx = {.set = set, .trace = &t->events,
-                   .pixel = (uint32_t)j * (uint32_t)scene->width + (uint32_t)i};
+  /* A memo of its own (adaptive sampling's lattice points, step 07), each
+   * run a tile of its own: the pixel traces what the render traces. */
+  Film film = {.width = scene->width, .height = scene->height, .memo = render_memo_new()};
   vec3s term[TERM_COUNT];
-  for (t->term = 0; t->term < TERM_COUNT; t->term++) {
-    RenderCtx run = ctx;
-    t->ctx = &run;
-    term[t->term] = req->pixel(&t->masked[t->term], &film, i, j, &run);
-    trace_drain(t);
-    free(run.memo); /* render_point's, when the step has one */
+  for (int k = 0; k < TERM_COUNT; k++) { /* unrecorded, each term alone */
+    render_memo_next_tile(film.memo);
+    term[k] = req->pixel(&t->masked[k], &film, i, j);
   }
-  t->mode = TRACE_RECORD;
-  t->ctx = &ctx;
   if (!(req->features & SCENE_SAMPLES))
     trace_vec2(trace_add(&t->lines, 0, "film sample", TRACE_DOC_FILM), "s",
                film_sample(&film, i, j));
   trace_begin_pixel(t);
-  vec3s c = req->pixel(&t->scene, &film, i, j, &ctx);
-  trace_drain(t);
+  render_memo_next_tile(film.memo);
+  vec3s c = req->pixel(&t->scene, &film, i, j);
+  trace_end_sample(t);
   bool lit = (req->features & SCENE_LIGHTS) && (t->compact || t->lit);
   end_pixel(t, scene, req, term, lit, c);
   print(t, scene, req, out);
-  free(ctx.memo);
+  free(film.memo);
   trace_free(t);
   free(t);
   return true;

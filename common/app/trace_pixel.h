@@ -23,7 +23,6 @@ typedef struct TraceRequest {
 /* Render pixel (x, y) alone through req->pixel, recording every step, and
  * print the trace to `out`. False (one line printed) when (x, y) is outside
  * the film or memory runs out. */
-bool trace_pixel(const Scene *scene, const RenderSettings *set, const TraceRequest *req,
-                 FILE *out);
+bool trace_pixel(const Scene *scene, const TraceRequest *req, FILE *out);
 
 #endif

@@ -3,10 +3,9 @@
  * the film's row order (j from the bottom) and the export. docs/01-film.md. */
 #include "app/app.h"
 
-static vec3s pixel(const Scene *scene, const Film *film, int i, int j, RenderCtx *ctx)
+static vec3s pixel(const Scene *scene, const Film *film, int i, int j)
 {
   (void)scene;
-  (void)ctx;
   /* BEGIN SOLUTION step 01 */
   bool left = i < film->width / 2, bottom = j < film->height / 2;
   if (left)

@@ -14,15 +14,13 @@ static Ray fixed_camera_ray(const Film *film, vec2s s)
   return r;
 }
 
-static vec3s pixel(const Scene *scene, const Film *film, int i, int j, RenderCtx *ctx)
+static vec3s pixel(const Scene *scene, const Film *film, int i, int j)
 {
   vec2s s = film_sample(film, i, j);
   Ray r = fixed_camera_ray(film, s);
   Hit hit;
-  ctx->rays++;
   if (!scene_intersect(scene, r, INFINITY, &hit))
     return scene->background;
-  trace_hit(ctx, &hit);
   if (s.x < 0.5f)
     return glms_vec3_scale(glms_vec3_adds(hit.n, 1.0f), 0.5f);
   float grey = fmaxf(0.0f, 1.0f - hit.t / 20.0f);

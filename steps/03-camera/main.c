@@ -2,15 +2,13 @@
  * the scene file, each object in its flat diffuse colour. docs/03-camera.md. */
 #include "app/app.h"
 
-static vec3s pixel(const Scene *scene, const Film *film, int i, int j, RenderCtx *ctx)
+static vec3s pixel(const Scene *scene, const Film *film, int i, int j)
 {
   vec2s s = film_sample(film, i, j);
   Ray r = camera_ray(&scene->camera, s.x, s.y);
   Hit hit;
-  ctx->rays++;
   if (!scene_intersect(scene, r, INFINITY, &hit))
     return scene->background;
-  trace_hit(ctx, &hit);
   return scene->materials[hit.inst->material].diffuse;
 }
 

@@ -6,15 +6,14 @@
 # (\n: a line break), the scene features it renders (SceneFeature bits), the
 # default sampler and --adaptive threshold (empty, 0: none).
 SUMMARY  = Step 05: Phong shading with shadows (any-hit shadow rays).
-FEATURES = SCENE_CAMERA | SCENE_LIGHTS
+FEATURES = SCENE_CAMERA | SCENE_LIGHTS | SCENE_SHADOWS
 SAMPLER  =
 ADAPTIVE = 0
 
 # The default scene, compiled into the program.
 SCENE = scenes/spheres.scene
 # The unit tests, tests/test_NAME.c, that make test-step 5 runs.
-# (phong: the step carries step 04's Phong region in its shade.c.)
-TESTS = shadows shadows_lecture phong
+TESTS = shadows shadows_lecture
 
 # The reference image images/05-shadows.png: the default scene at WIDTH HEIGHT with
 # these options (besides --threads 2 --quiet); the Phong terms drawn alone

@@ -6,15 +6,14 @@
 # (\n: a line break), the scene features it renders (SceneFeature bits), the
 # default sampler and --adaptive threshold (empty, 0: none).
 SUMMARY  = Step 06: ambient light, and point lights the camera sees.
-FEATURES = SCENE_CAMERA | SCENE_LIGHTS | SCENE_AMBIENT | SCENE_LIGHT_SHAPES
+FEATURES = SCENE_CAMERA | SCENE_LIGHTS | SCENE_SHADOWS | SCENE_AMBIENT | SCENE_LIGHT_SHAPES
 SAMPLER  =
 ADAPTIVE = 0
 
 # The default scene, compiled into the program.
 SCENE = scenes/ambient.scene
 # The unit tests, tests/test_NAME.c, that make test-step 6 runs.
-# (phong: the step carries step 04's Phong region in its shade.c.)
-TESTS = ambient phong
+TESTS = ambient
 
 # The reference image images/06-ambient.png: the default scene at WIDTH HEIGHT with
 # these options (besides --threads 2 --quiet); the Phong terms drawn alone

@@ -6,15 +6,14 @@
 # (\n: a line break), the scene features it renders (SceneFeature bits), the
 # default sampler and --adaptive threshold (empty, 0: none).
 SUMMARY  = Step 07: antialiasing, several samples per pixel and adaptive sampling.\nDefaults: the scene's samples, --adaptive 0.05 (corners and centre, cut in\nfour where they differ); with --adaptive 0, --sampler sobol (unbiased).
-FEATURES = SCENE_CAMERA | SCENE_LIGHTS | SCENE_AMBIENT | SCENE_LIGHT_SHAPES | SCENE_SAMPLES
+FEATURES = SCENE_CAMERA | SCENE_LIGHTS | SCENE_SHADOWS | SCENE_AMBIENT | SCENE_LIGHT_SHAPES | SCENE_SAMPLES
 SAMPLER  = sobol
 ADAPTIVE = 0.05
 
 # The default scene, compiled into the program.
 SCENE = scenes/antialiasing.scene
 # The unit tests, tests/test_NAME.c, that make test-step 7 runs.
-# (phong: the step carries step 04's Phong region in its shade.c.)
-TESTS = sampler antialiasing phong
+TESTS = sampler antialiasing
 
 # The reference image images/07-antialiasing.png: the default scene at WIDTH HEIGHT with
 # these options (besides --threads 2 --quiet); the Phong terms drawn alone

@@ -6,15 +6,14 @@
 # (\n: a line break), the scene features it renders (SceneFeature bits), the
 # default sampler and --adaptive threshold (empty, 0: none).
 SUMMARY  = Step 08: area lights, soft shadows from stratified light samples.\nDefaults: the scene's samples and light_samples, --sampler sobol, --adaptive 0\n(unbiased: every pixel takes all its samples).
-FEATURES = SCENE_CAMERA | SCENE_LIGHTS | SCENE_AMBIENT | SCENE_LIGHT_SHAPES | SCENE_SAMPLES | SCENE_AREA_LIGHTS
+FEATURES = SCENE_CAMERA | SCENE_LIGHTS | SCENE_SHADOWS | SCENE_AMBIENT | SCENE_LIGHT_SHAPES | SCENE_SAMPLES | SCENE_AREA_LIGHTS
 SAMPLER  = sobol
 ADAPTIVE = 0
 
 # The default scene, compiled into the program.
 SCENE = scenes/area-lights.scene
 # The unit tests, tests/test_NAME.c, that make test-step 8 runs.
-# (phong: the step carries step 04's Phong region in its shade.c.)
-TESTS = area_light phong
+TESTS = area_light
 
 # The reference image images/08-area-lights.png: the default scene at WIDTH HEIGHT with
 # these options (besides --threads 2 --quiet); the Phong terms drawn alone

@@ -14,6 +14,7 @@
 #include "app/cli.h"
 #include "app/image.h"
 #include "app/parser.h"
+#include "app/render.h"
 #include "app/parser_state.h"
 #include "reader/sphere_line.h"
 #include "sampler.h"
@@ -164,8 +165,8 @@ void fuzz_render(const uint8_t *data, size_t size)
       film_init(&film, s.width, s.height)) {
     SamplerKind kind = SAMPLER_CENTER;
     sampler_parse(samplers[size % 5], &kind);
-    RenderSettings set = {.threads = 1, .seed = 1, .sampler = kind,
-                          .adaptive = size % 2 ? step->adaptive : 0.0f, .progress = false};
+    s.sampler = (Sampler){.kind = kind, .seed = 1, .adaptive = size % 2 ? step->adaptive : 0.0f};
+    RenderSettings set = {.threads = 1, .progress = false};
     RenderStats st;
     render(&s, &film, step->pixel, &set, &st);
     check_film(&film);

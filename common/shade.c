@@ -1,42 +1,13 @@
-/* Step 08: area lights. A parallelogram light is sampled as N small point
- * lights spread over it in strata; each casts its own shadow, and together
- * they make soft shadows. docs/08-area-lights.md. */
+/* Shading (steps 04 to 08; common/shade.h): Scene.TraceRay,
+ * PhongMaterial.Eval and Light.Radiance. docs/04-phong.md to
+ * docs/08-area-lights.md. */
 #include "shade.h"
 
-#include "app/trace.h"
+#include <string.h>
 #include "rng.h"
-#include "sampler.h"
 
-bool shade_visible(const Scene *scene, const Hit *hit, vec3s l, float dist, RenderCtx *ctx)
+vec3s shade_phong_light(const Material *m, const Hit *hit, vec3s v, vec3s li, vec3s l)
 {
-  ctx->rays++; /* a shadow ray */
-  /* BEGIN SOLUTION step 05 */
-  /* The lecture traces a closest-hit ray and checks that it reaches the light.
-   * Any occluder closer than the light will do, so ask the cheaper any-hit
-   * query, stopping just short of the light. The origin is pushed off the
-   * surface by its error bound, not by a fixed epsilon (docs/05-shadows.md). */
-  return !scene_occluded(scene, ray_spawn(hit, l), ray_shadow_tmax(dist));
-  /* STUB: return true; */
-  /* END SOLUTION */
-}
-
-vec3s shade_incident(const Scene *scene, const Light *light, const Hit *hit,
-                     vec3s *l, RenderCtx *ctx)
-{
-  float dist;
-  vec3s li = light_incident(light, hit->p, hit->p_err, l, &dist);
-  /* A light behind the surface adds nothing (shade_phong_light skips it): it
-   * needs no shadow ray. */
-  if (glms_vec3_dot(hit->n, *l) > 0.0f && !shade_visible(scene, hit, *l, dist, ctx))
-    li = glms_vec3_zero();
-  return trace_incident(ctx, (int)(light - scene->lights), li, *l, shade_phong_light);
-}
-
-/* inline: a hint that keeps it inlined into the render's loop, though the
- * tracer calls it too (trace_incident; docs/tracing.md). */
-inline vec3s shade_phong_light(const Material *m, const Hit *hit, vec3s v, vec3s li, vec3s l)
-{
-  trace_term(m, hit, v, li, l); /* --trace, --aov: its arguments */
   vec3s c = glms_vec3_zero();
   /* BEGIN SOLUTION step 04 */
   float n_dot_l = glms_vec3_dot(hit->n, l);
@@ -54,20 +25,46 @@ inline vec3s shade_phong_light(const Material *m, const Hit *hit, vec3s v, vec3s
   return c;
 }
 
-/* BEGIN SOLUTION step 08 */
-/* Where the n samples of light `light` go for the camera sample being traced:
- * step 07's pattern (--sampler) on the light's parameters (a, b) in [0,1)^2,
- * with a key of its own for each light and camera sample (the first draw of
- * the stream (seed ^ golden * (light + 1), pixel, camera sample)). Keyed by
- * the seed alone, every camera sample of a pixel would reuse one light
- * pattern: N light samples per pixel instead of N per camera sample. */
-static SamplerPattern light_pattern(const RenderCtx *ctx, int light, int n)
+bool shade_visible(const Scene *scene, const Hit *hit, vec3s l, float dist)
 {
-  Rng r = rng_make(ctx->set->seed ^ (0x9e3779b9u * (uint32_t)(light + 1)), ctx->pixel,
-                   ctx->sample);
-  return sampler_pattern(ctx->set->sampler, rng_next(&r), ctx->pixel, (uint32_t)n);
+  /* BEGIN SOLUTION step 05 */
+  /* The lecture traces a closest-hit ray and checks that it reaches the light.
+   * Any occluder closer than the light will do, so ask the cheaper any-hit
+   * query, stopping just short of the light. The origin is pushed off the
+   * surface by its error bound, not by a fixed epsilon (docs/05-shadows.md). */
+  return !scene_occluded(scene, ray_spawn(hit, l), ray_shadow_tmax(dist));
+  /* STUB: return true; */
+  /* END SOLUTION */
 }
 
+vec3s shade_incident(const Scene *scene, const Light *light, const Hit *hit, vec3s *l)
+{
+  float dist;
+  vec3s li = light_incident(light, hit->p, hit->p_err, l, &dist);
+  /* Shadows from step 05 on (a scene loaded without them has none). A light
+   * behind the surface adds nothing (shade_phong_light skips it): it needs
+   * no shadow ray. */
+  if (scene->info.shadows && glms_vec3_dot(hit->n, *l) > 0.0f &&
+      !shade_visible(scene, hit, *l, dist))
+    li = glms_vec3_zero();
+  return li;
+}
+
+/* Where the n samples of area light `light` go for this hit point: the
+ * scene's pattern (--sampler) on the light's parameters (a, b) in [0,1)^2,
+ * keyed by the seed, the light and the hit point's coordinates (their bits):
+ * each camera sample's hit point draws a pattern of its own, the same
+ * whichever thread traces it. */
+static SamplerPattern light_pattern(const Scene *scene, int light, const Hit *hit, int n)
+{
+  uint32_t b[3];
+  memcpy(b, &hit->p, sizeof b);
+  Rng r = rng_make(scene->sampler.seed ^ (0x9e3779b9u * (uint32_t)(light + 1)),
+                   b[0] ^ (b[2] * 0x85ebca77u), b[1]);
+  return sampler_pattern(scene->sampler.kind, rng_next(&r), rng_next(&r), (uint32_t)n);
+}
+
+/* BEGIN SOLUTION step 08 */
 /* The light's point (a, b) as a point light of power (P/n) cos(theta_light):
  * its radiance at the hit point, *l toward it and *dist to it. Zero when the
  * hit point is behind the light (one-sided) or on it. */
@@ -87,14 +84,14 @@ static vec3s area_incident(const Light *light, vec2s ab, int n, const Hit *hit, 
 }
 /* END SOLUTION */
 
-vec3s shade_area(const Scene *scene, int light_index, const Hit *hit, vec3s v, int n,
-                 RenderCtx *ctx)
+vec3s shade_area(const Scene *scene, int light_index, const Hit *hit, vec3s v)
 {
   vec3s c = glms_vec3_zero();
   /* BEGIN SOLUTION step 08 */
   const Light *light = &scene->lights[light_index];
   const Material *m = &scene->materials[hit->inst->material];
-  SamplerPattern pattern = light_pattern(ctx, light_index, n);
+  int n = scene->light_samples;
+  SamplerPattern pattern = light_pattern(scene, light_index, hit, n);
   for (int k = 0; k < n; k++) {
     vec3s l;
     float dist;
@@ -103,25 +100,27 @@ vec3s shade_area(const Scene *scene, int light_index, const Hit *hit, vec3s v, i
     /* A sample that adds nothing needs no shadow ray. */
     if (vec_is_zero(li) || !(glms_vec3_dot(hit->n, l) > 0.0f))
       continue;
-    if (shade_visible(scene, hit, l, dist, ctx))
+    if (shade_visible(scene, hit, l, dist))
       c = glms_vec3_add(c, shade_phong_light(m, hit, v, li, l));
   }
   /* END SOLUTION */
-  return trace_area(ctx, light_index, false, c);
+  return c;
 }
 
 /* One light's term at the hit point seen from the direction v. */
-static vec3s shade_light(const Scene *scene, int k, const Hit *hit, vec3s v, RenderCtx *ctx)
+static vec3s shade_light(const Scene *scene, int k, const Hit *hit, vec3s v)
 {
-  const Light *light = &scene->lights[k];
-  if (light->type == LIGHT_AREA)
-    return shade_area(scene, k, hit, v, scene->light_samples, ctx);
+  /* BEGIN SOLUTION step 08 */
+  /* HINT: complete shade_light: an area light's term is shade_area's */
+  if (scene->lights[k].type == LIGHT_AREA)
+    return shade_area(scene, k, hit, v);
+  /* END SOLUTION */
   vec3s l;
-  vec3s li = shade_incident(scene, &scene->lights[k], hit, &l, ctx);
+  vec3s li = shade_incident(scene, &scene->lights[k], hit, &l);
   return shade_phong_light(&scene->materials[hit->inst->material], hit, v, li, l);
 }
 
-vec3s shade_phong(const Scene *scene, const Hit *hit, vec3s eye, RenderCtx *ctx)
+vec3s shade_phong(const Scene *scene, const Hit *hit, vec3s eye)
 {
   vec3s c = glms_vec3_zero();
   /* BEGIN SOLUTION step 06 */
@@ -133,18 +132,16 @@ vec3s shade_phong(const Scene *scene, const Hit *hit, vec3s eye, RenderCtx *ctx)
   /* BEGIN SOLUTION step 04 */
   vec3s v = glms_vec3_normalize(glms_vec3_sub(eye, hit->p));
   for (int k = 0; k < scene->n_lights; k++)
-    c = glms_vec3_add(c, shade_light(scene, k, hit, v, ctx));
+    c = glms_vec3_add(c, shade_light(scene, k, hit, v));
   /* END SOLUTION */
   return c;
 }
 
-vec3s shade_trace(const Scene *scene, Ray ray, RenderCtx *ctx)
+vec3s shade_trace(const Scene *scene, Ray ray)
 {
   Hit hit;
-  ctx->rays++;
   if (!scene_intersect(scene, ray, INFINITY, &hit))
     return scene->background;
-  trace_hit(ctx, &hit);
   /* BEGIN SOLUTION step 08 */
   /* HINT: complete shade_trace: an area light shows P / A in front, black behind */
   if (hit.inst->light >= 0 && scene->lights[hit.inst->light].type == LIGHT_AREA) {
@@ -163,5 +160,21 @@ vec3s shade_trace(const Scene *scene, Ray ray, RenderCtx *ctx)
   }
   /* STUB: if (hit.inst->light >= 0) return glms_vec3_zero(); */
   /* END SOLUTION */
-  return shade_phong(scene, &hit, ray.o, ctx);
+  return shade_phong(scene, &hit, ray.o);
+}
+
+/* flatten: every shading function it calls compiled into it, one body per
+ * camera sample (gcc and clang). Without it the compiler keeps
+ * shade_visible, shade_incident and scene_intersect as calls, since the
+ * tracer and step 08's shade_area call them too: step 05 renders about 1.2x
+ * slower (farm-bench --vs, one thread). */
+__attribute__((flatten)) vec3s shade_sample(const Scene *scene, float x, float y)
+{
+  return shade_trace(scene, camera_ray(&scene->camera, x, y));
+}
+
+vec3s shade_pixel(const Scene *scene, const Film *film, int i, int j)
+{
+  vec2s s = film_sample(film, i, j);
+  return shade_sample(scene, s.x, s.y);
 }
