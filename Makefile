@@ -376,14 +376,15 @@ check:
 
 # The files derived from the sources are up to date, every citation exists.
 # A stale one says "run make regen".
-check-derived: check-diffs check-refs check-mutants check-images check-traces check-docimg
+check-derived: check-diffs check-refs check-mutants check-diagnoses check-images check-traces check-docimg
 .PHONY: check check-derived
 
 help:
 	@echo "For students (README.md)"
 	@echo "  make              build every step and render its default scene to $(BUILD)/out/"
 	@echo "  make test         every present step's unit and image tests, the stress, reliability and trace tests, the report"
-	@echo "  make test-step N  step N's unit tests and image test, and the stress tests of steps 1 .. N (N = 1 .. 8)"
+	@echo "  make test-step N  step N's unit tests and image test, and the stress tests of steps 1 .. N (N = 1 .. 8);"
+	@echo "                    a result nothing has changed since it passed is reused (RT_CACHE=0: run all)"
 	@echo "  make trace-step N [X Y]  step N's traces against the solution's: the first line that differs"
 	@echo "  make report       write $(BUILD)/report/index.html from the last test results"
 	@echo "  make stress [N=K] the numerical stress tests of the steps written so far (or of steps 1 .. K)"
@@ -409,6 +410,7 @@ help:
 	@echo "  make starter      write the student starter tree to $(BUILD)/starter (N=5: steps 1-4 stay solved)"
 	@echo "  make dist         the starter as handed out: $(BUILD)/dist/raytracer-starter.tar.gz (no git needed to build, test, grade)"
 	@echo "  make mutants      run the realistic student bugs through every step, write docs/mutants.md"
+	@echo "  make diagnoses    the known mistakes' signatures the verdict lines name (tests/diagnoses.tsv; check-diagnoses, measure-diagnoses)"
 	@echo "  make valgrind     the whole suite under valgrind"
 	@echo "Grading (docs/grading.md)"
 	@echo "  make grade SUBMISSIONS=DIR [HIDDEN=DIR] [POINTS=FILE] [JOBS=N]  grade a class into $(BUILD)/grade/"

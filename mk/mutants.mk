@@ -12,3 +12,19 @@ check-mutants:
 	@tools/mutants.sh --check
 
 .PHONY: mutants check-mutants
+
+# The diagnosis of a failing check (docs/mutants.md, "Diagnosis"): the
+# signature of each bug's failing checks at its own step, in
+# tests/diagnoses.tsv, which tests/run.sh reads. make diagnoses rewrites it
+# (minutes; written only when it changes; DIAGNOSES=pattern: those mutants
+# alone, to build/diagnoses/); make check-diagnoses says when it is stale;
+# make measure-diagnoses puts every mutant through the student's build and
+# counts the verdicts that name their mistake (build/diagnoses/measure.md).
+diagnoses:
+	@tools/diagnoses.sh write $(if $(DIAGNOSES),'$(DIAGNOSES)')
+check-diagnoses:
+	@tools/diagnoses.sh check
+measure-diagnoses:
+	@tools/diagnoses.sh measure $(if $(DIAGNOSES),'$(DIAGNOSES)')
+
+.PHONY: diagnoses check-diagnoses measure-diagnoses

@@ -24,12 +24,16 @@
 /* The step a stress test belongs to: the latest step whose functions it runs
  * (docs/accuracy.md). RT_STRESS_STEPS=K (make stress, make test-step K) runs
  * the tests of steps 01 .. K and skips the others, so that a student's run
- * never meets a step not written yet; unset, every test runs. */
+ * never meets a step not written yet; RT_STRESS_ONLY=K runs step K's alone
+ * (tests/run.sh runs the steps one by one, to reuse each step's result while
+ * its code is unchanged); unset, every test runs. */
 static inline void stress_step(int step)
 {
-  const char *upto = getenv("RT_STRESS_STEPS");
+  const char *upto = getenv("RT_STRESS_STEPS"), *only = getenv("RT_STRESS_ONLY");
   if (upto && *upto && step > atoi(upto))
     cr_skip_test("a stress test of step %02d (this run: steps 01 .. %02d)", step, atoi(upto));
+  if (only && *only && step != atoi(only))
+    cr_skip_test("a stress test of step %02d (this run: step %02d alone)", step, atoi(only));
 }
 
 /* MPFR precision of every reference: the inputs are floats (24-bit
