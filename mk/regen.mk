@@ -10,9 +10,9 @@
 # and printing "regen: wrote FILE" (or "TOOL: rewrote FILE") for each file it
 # writes (make regen lists those lines). regen-statements: the lists of
 # statements in the expected messages, tests/statements.h and the fuzzing
-# dictionary (mk/shapes.mk). The mutants' fingerprints go here when their
-# generator exists.
-REGEN_HOOKS := regen-statements
+# dictionary (mk/shapes.mk); diagnoses: the mutants' fingerprints,
+# tests/diagnoses.tsv (mk/mutants.mk).
+REGEN_HOOKS := regen-statements diagnoses
 
 # What the parts run: the steps' programs, the picture comparison, the trace
 # comparison, the docs' pictures' programs (tools/docimg.sh).
