@@ -172,6 +172,6 @@ if cmp -s "$work/table.new" "$out"; then
   echo "diagnoses: ${out#$top/} unchanged ($(( $(now) - t_start )) s)"
 else
   mv "$work/table.new" "$out"
-  echo "diagnoses: wrote ${out#$top/}: $(grep -vc '^#' "$out") signatures of ${#mutants[@]} mutants ($(( $(now) - t_start )) s)"
+  echo "diagnoses: rewrote ${out#$top/}: $(grep -vc '^#' "$out") signatures of ${#mutants[@]} mutants ($(( $(now) - t_start )) s)"
 fi
 exit $((errors > 0))
