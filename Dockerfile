@@ -1,6 +1,6 @@
 # One environment for students (VS Code or Codespaces, .devcontainer/), the
 # grader and CI: Debian 12 with the packages the course's own install step
-# (make deps, through tools/deps.sh) puts there. Build and enter it:
+# (make deps, through tools/build/deps.sh) puts there. Build and enter it:
 #   docker build -t raytracer . && docker run --rm -it -v "$PWD":/course raytracer
 # then `make` and `make test` inside. DEPS names the make targets that
 # install packages: the build's alone by default; add grade-deps for the
@@ -18,7 +18,7 @@ WORKDIR /course
 # does not install the packages again.
 COPY Makefile ./
 COPY mk/ mk/
-COPY tools/deps.sh tools/
+COPY tools/build/deps.sh tools/
 RUN make $DEPS && rm -rf build && rm -rf /var/lib/apt/lists/*
 COPY . .
 CMD ["bash"]

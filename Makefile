@@ -1,7 +1,7 @@
 # Ray-tracing course: build every step, render it, test it, measure it.
 # `make` builds and renders all steps; `make test` tests them (`make check`: the course); `make help`
 # lists the other targets. GNU make 4, gcc or clang, the libraries from
-# pkg-config (tools/deps.sh installs them on Debian as root).
+# pkg-config (tools/build/deps.sh installs them on Debian as root).
 
 SHELL := /bin/bash
 .DEFAULT_GOAL := all
@@ -16,7 +16,7 @@ PRESENT := $(filter $(STEPS),$(notdir $(wildcard steps/[0-9][0-9]-*)))
 # Each step's manifest, steps/NN-name/step.mk (docs/instructors.md, "A step's
 # manifest"): its KEY = value lines read here as NN-name.KEY (the scene
 # compiled into its program, NN-name.SCENE; its unit tests tests/test_NAME.c,
-# NN-name.TESTS; ...). tools/manifest.sh reads the same files for the shell
+# NN-name.TESTS; ...). tools/build/manifest.sh reads the same files for the shell
 # tools and writes the header of the step's Step fields.
 MANIFEST_KEYS := SUMMARY FEATURES SAMPLER ADAPTIVE SCENE TESTS IMAGE_SIZE IMAGE_ARGS IMAGE_TOL \
                  IMAGE_TERMS TRACE_ARGS
@@ -37,7 +37,7 @@ $(foreach s,$(PRESENT),$(eval $(s).TESTS := $(patsubst SHAPES,$(SHAPE_TESTS),$($
 STRESS_TESTS := $(patsubst tests/%.c,%,$(wildcard tests/stress_*.c))
 
 # ---------------------------------------------------------------- flags
-# The compiler is Make's CC (cc unless given: make CC=clang). tools/deps.sh
+# The compiler is Make's CC (cc unless given: make CC=clang). tools/build/deps.sh
 # probes it once per build folder into $(BUILD)/config.mk: gcc or clang, its
 # OpenMP flags, LTO, and the libraries' flags from pkg-config.
 CONFIG := $(BUILD)/config.mk
@@ -145,16 +145,16 @@ print-flags:
 	  '$(strip $(filter-out -MMD -MP,$(CFLAGS)) $(PKG_CFLAGS))' '$(strip $(LDFLAGS))' '$(strip $(LDLIBS))' '$(BUILD_KIND)'
 
 # ---------------------------------------------------------------- dependencies
-# tools/deps.sh check: the build's libraries through pkg-config. As root on
+# tools/build/deps.sh check: the build's libraries through pkg-config. As root on
 # Debian/Ubuntu it installs what is missing (apt-get); elsewhere it prints the
 # one install command of the system (dnf, brew, pacman).
-$(BUILD)/.deps: Makefile tools/deps.sh
+$(BUILD)/.deps: Makefile tools/build/deps.sh
 	@mkdir -p $(@D)
-	@tools/deps.sh check '$(CC)'
+	@tools/build/deps.sh check '$(CC)'
 	@touch $@
 
-$(CONFIG): $(BUILD)/.deps tools/deps.sh
-	@tools/deps.sh config '$(CC)' $(STB) > $@.tmp && mv $@.tmp $@
+$(CONFIG): $(BUILD)/.deps tools/build/deps.sh
+	@tools/build/deps.sh config '$(CC)' $(STB) > $@.tmp && mv $@.tmp $@
 ifndef SKIP_CONFIG
   ifneq ($(CONFIG_CC) $(CONFIG_STB),$(CC) $(STB))
     $(CONFIG): FORCE
@@ -164,7 +164,7 @@ FORCE:
 
 # Debian packages of the optional targets (the benchmark here, grading and
 # the sanitizers in mk/): installed as root, else the apt-get command.
-need_debs = tools/deps.sh debs $(1)
+need_debs = tools/build/deps.sh debs $(1)
 DEB_BENCH := gnuplot-nox povray hyperfine
 
 deps: $(BUILD)/.deps
@@ -209,15 +209,15 @@ $(1)_OBJ := $$($(1)_SRC:%.c=$(BUILD)/obj/%.o)
 $(1)_LIB := $$(filter-out %/main.o,$$($(1)_OBJ))
 $(BUILD)/obj/steps/$(1)/%.o: CFLAGS += -Isteps/$(1)
 
-$(BUILD)/gen/$(1)-scene.c: $($(1).SCENE) tools/scene2c.sh steps/$(1)/step.mk
+$(BUILD)/gen/$(1)-scene.c: $($(1).SCENE) tools/build/scene2c.sh steps/$(1)/step.mk
 	@mkdir -p $$(@D)
-	@tools/scene2c.sh $($(1).SCENE) > $$@
+	@tools/build/scene2c.sh $($(1).SCENE) > $$@
 
 # main.c's Step fields (STEP_MANIFEST) and the image test's reference size,
 # options and tolerance, from the manifest.
-$(BUILD)/gen/$(1)/step_manifest.h: steps/$(1)/step.mk tools/manifest.sh
+$(BUILD)/gen/$(1)/step_manifest.h: steps/$(1)/step.mk tools/build/manifest.sh
 	@mkdir -p $$(@D)
-	@tools/manifest.sh header $(1) > $$@.tmp && mv $$@.tmp $$@
+	@tools/build/manifest.sh header $(1) > $$@.tmp && mv $$@.tmp $$@
 $(BUILD)/obj/steps/$(1)/main.o: CFLAGS += -I$(BUILD)/gen/$(1) -include step_manifest.h
 $(BUILD)/obj/steps/$(1)/main.o: $(BUILD)/gen/$(1)/step_manifest.h
 
@@ -284,7 +284,7 @@ test: test-build
 # The stress tests of steps 01 .. K (tests/stress.h, stress_step): make stress
 # N=K, or by default the steps written so far, up to the first step whose
 # TODO(step NN) a starter tree still holds (all eight in a solved tree). Those
-# of step 05 render through steps 04, 05 and tools/mistakes.c (docs/accuracy.md).
+# of step 05 render through steps 04, 05 and tools/figures/mistakes.c (docs/accuracy.md).
 STRESS_TODO = $(shell grep -rhoE 'TODO\(step [0-9]+\)' common steps 2>/dev/null | \
                 grep -oE '[0-9]+' | sort -n | head -1)
 STRESS_UPTO = $(if $(N),$(N_PAD),$(if $(STRESS_TODO),$(shell printf %02d \
@@ -305,7 +305,7 @@ N_NUM = $(shell expr '$(N)' + 0 2>/dev/null)
 N_PAD = $(if $(N_NUM),$(shell printf %02d '$(N_NUM)' 2>/dev/null))
 STEP_N = $(filter $(N_PAD)-%,$(STEPS))
 # With the stress tests of steps 01 .. N; TEST_STEP_STRESS=0: the step's own
-# tests alone (tools/check-regions.sh and tools/mutants.sh run those apart).
+# tests alone (tools/check/check-regions.sh and tools/check/mutants.sh run those apart).
 TEST_STEP_STRESS ?= 1
 TEST_STEP_STRESSBIN = $(if $(filter 1,$(TEST_STEP_STRESS)),$(call stress_bins,$(N_PAD)))
 test-step:
@@ -328,15 +328,15 @@ sanitize-gcc:
 # files: make regen (mk/regen.mk) rewrites those that changed.
 
 # The pictures of shadow and ambient mistakes in docs/05-shadows.md and
-# docs/06-ambient.md: tools/mistakes.c renders them (make regen, through
-# tools/docimg.sh).
-$(BUILD)/bin/mistakes: $(BUILD)/obj/tools/mistakes.o $(BUILD)/obj/gen/05-shadows-scene.o \
+# docs/06-ambient.md: tools/figures/mistakes.c renders them (make regen, through
+# tools/figures/docimg.sh).
+$(BUILD)/bin/mistakes: $(BUILD)/obj/tools/figures/mistakes.o $(BUILD)/obj/gen/05-shadows-scene.o \
                        $(LIBCOMMON)
 	@mkdir -p $(@D)
 	@echo "LD $@"
 	@$(CC) $(CFLAGS) $(LDFLAGS) $^ $(LDLIBS) -o $@
 check-diffs:
-	@tools/diffs.sh check $(PRESENT)
+	@tools/figures/diffs.sh check $(PRESENT)
 
 # ---------------------------------------------------------------- benchmark
 bench: bench-deps $(BINS) bench-accuracy
@@ -380,7 +380,7 @@ check-derived: check-diffs check-refs check-mutants check-diagnoses check-images
 .PHONY: check check-derived
 
 help:
-	@echo "For students (README.md)"
+	@echo "For students (README.md; their tools in tools/loop/)"
 	@echo "  make              build every step and render its default scene to $(BUILD)/out/"
 	@echo "  make test         every present step's unit and image tests, the stress, reliability and trace tests, the report"
 	@echo "  make test-step N  step N's unit tests and image test, and the stress tests of steps 1 .. N (N = 1 .. 8);"
@@ -390,13 +390,13 @@ help:
 	@echo "  make stress [N=K] the numerical stress tests of the steps written so far (or of steps 1 .. K)"
 	@echo "  make test-reliability  the bad-input suite, the number reader, output files, fuzz corpus"
 	@echo "  make test-build   build what make test runs, without running it (make -j2 test-build: two at a time)"
-	@echo "Building (README.md, \"Set up\"; docs/performance.md, \"Build flags\")"
+	@echo "Building (README.md, \"Set up\"; docs/performance.md, \"Build flags\"; tools/build/)"
 	@echo "  make deps         check the libraries; as root on Debian, install the missing ones"
 	@echo "  make CC=clang     build with clang (BUILD=build/clang keeps both builds)"
 	@echo "  make NATIVE=1     tune for this CPU (the programs may not run on another machine)"
 	@echo "  make OPENMP=0     one thread, without OpenMP (the same pictures)"
 	@echo "  make print-flags  the compiler and flags in use"
-	@echo "For instructors (docs/instructors.md)"
+	@echo "For instructors (docs/instructors.md; the course checks in tools/check/)"
 	@echo "  make check        make test, then every check of the course, stage by stage:"
 	@echo "    make check-derived   check-diffs, check-refs, check-mutants, check-images, check-traces, check-docimg"
 	@echo "    make check-report    the report in headless Chromium"
@@ -412,7 +412,7 @@ help:
 	@echo "  make mutants      run the realistic student bugs through every step, write docs/mutants.md"
 	@echo "  make diagnoses    the known mistakes' signatures the verdict lines name (tests/diagnoses.tsv; check-diagnoses, measure-diagnoses)"
 	@echo "  make valgrind     the whole suite under valgrind"
-	@echo "Grading (docs/grading.md)"
+	@echo "Grading (docs/grading.md; tools/grading/)"
 	@echo "  make grade SUBMISSIONS=DIR [HIDDEN=DIR] [POINTS=FILE] [JOBS=N]  grade a class into $(BUILD)/grade/"
 	@echo "  make gradescope   pack the grader for Gradescope ($(BUILD)/gradescope/autograder.zip)"
 	@echo "  make sample-class write the sample class of submissions to $(BUILD)/sample-class"
@@ -421,7 +421,7 @@ help:
 	@echo "Performance (docs/benchmarks.md, docs/performance.md)"
 	@echo "  make bench        measure speed and error against POV-Ray, write docs/benchmarks.md"
 	@echo "  make bench-accuracy  time step 05's frame, robust vs textbook geometry (docs/accuracy.md)"
-	@echo "Derived files (docs/instructors.md, \"Derived files\")"
+	@echo "Derived files (docs/instructors.md, \"Derived files\"; tools/figures/)"
 	@echo "  make regen        rebuild every derived file, write those that changed, list the places to re-read"
 	@echo "                    (REGEN_BENCH=1: make bench too); steps/NN-name/step.mk is each step's manifest"
 	@echo "  make images, make traces, make diffs, make docimg  one part of make regen: images/, tests/traces/,"
@@ -430,7 +430,7 @@ help:
 	@echo "  make clean        remove $(BUILD)/"
 
 starter:
-	@tools/starter.sh $(BUILD)/starter $(N)
+	@tools/check/starter.sh $(BUILD)/starter $(N)
 
 .PHONY: all build deps bench-deps test test-build stress test-step sanitize sanitize-gcc \
         check-diffs bench bench-accuracy clean help starter

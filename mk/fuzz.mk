@@ -67,7 +67,7 @@ FUZZ_DICT_cli    := tests/fuzz/cli.dict
 # coverage, corpus) printed and kept in build/fuzz/TARGET.log.
 $(FUZZ_TARGETS:%=fuzz-%): fuzz-%: $(FUZZ_BUILD)/fuzz-% $(FUZZ_BUILD)/seeds/%
 	@mkdir -p $(FUZZ_BUILD)/corpus/$* $(FUZZ_BUILD)/crashes/$*
-	@tools/omp-stale.sh
+	@tools/build/omp-stale.sh
 	@echo "fuzz-$*: $(FUZZ_SECONDS) s (build/fuzz/crashes/$*/ keeps what crashes)"
 	@$(FUZZ_BUILD)/fuzz-$* -max_total_time=$(FUZZ_SECONDS) -timeout=10 -close_fd_mask=3 \
 	  -print_final_stats=1 -dict=$(FUZZ_DICT_$*) \

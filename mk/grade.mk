@@ -23,11 +23,11 @@ $(BUILD)/bin/grade-compare: $(BUILD)/obj/tools/grading/compare.o $(LIBCOMMON)
 
 GRADE_VARS := SUBMISSIONS HIDDEN POINTS JOBS OUT SSHLOGIN SLURM SLURM_ARGS KEEP
 grade: grade-deps $(BUILD)/bin/grade-compare
-	@tools/grade $(foreach v,$(GRADE_VARS),$(if $($(v)),$(v)='$($(v))'))
+	@tools/grading/grade $(foreach v,$(GRADE_VARS),$(if $($(v)),$(v)='$($(v))'))
 
 # The autograder to upload to Gradescope: $(BUILD)/gradescope/autograder.zip.
 gradescope: grade-deps
-	@tools/gradescope/zip.sh $(BUILD)/gradescope/autograder.zip $(HIDDEN) $(POINTS)
+	@tools/grading/gradescope/zip.sh $(BUILD)/gradescope/autograder.zip $(HIDDEN) $(POINTS)
 
 # The sample class (tools/grading/sample-class.txt) in $(BUILD)/sample-class.
 sample-class:
@@ -44,11 +44,11 @@ GRADE_SAMPLE_HIDDEN := tools/grading/sample-hidden
 grade-test-deps: grade-deps
 	-@DEBS_FOR="make test-grade's look at the grading pages in headless Chromium" $(call need_debs,$(DEB_GRADE_PAGES))
 test-grade: grade-test-deps $(BUILD)/bin/grade-compare $(BUILD)/bin/report-check
-	@if [ ! -x tools/mutate.sh ]; then \
-	  echo "SKIP  grading the sample class: tools/mutate.sh (make mutants) is not in this tree"; exit 0; fi; \
+	@if [ ! -x tools/check/mutate.sh ]; then \
+	  echo "SKIP  grading the sample class: tools/check/mutate.sh (make mutants) is not in this tree"; exit 0; fi; \
 	t0=$$(date +%s); export GRADE_TEST_MIN=3; \
 	tools/grading/sample-class.sh $(GRADE_TEST)/class >/dev/null && \
-	tools/grade SUBMISSIONS=$(GRADE_TEST)/class HIDDEN=$(GRADE_SAMPLE_HIDDEN) \
+	tools/grading/grade SUBMISSIONS=$(GRADE_TEST)/class HIDDEN=$(GRADE_SAMPLE_HIDDEN) \
 	  OUT=$(GRADE_TEST)/out $(if $(JOBS),JOBS=$(JOBS)) >$(GRADE_TEST)/grade.log 2>&1 || { cat $(GRADE_TEST)/grade.log; exit 1; }; \
 	tools/grading/check-class.sh $(GRADE_TEST)/out | sed 's/^check-class: /      /' > $(GRADE_TEST)/check.log; \
 	st=$${PIPESTATUS[0]}; \
@@ -56,7 +56,7 @@ test-grade: grade-test-deps $(BUILD)/bin/grade-compare $(BUILD)/bin/report-check
 	  "load $$(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null))"; \
 	else echo "FAIL  grading the sample class:"; cat $(GRADE_TEST)/check.log; exit 1; fi; \
 	REPORT_CHECK=$(BUILD)/bin/report-check tools/grading/page-test.sh $(GRADE_TEST)/out correct larger-root && \
-	tools/gradescope/test.sh $(GRADE_TEST)/class $(GRADE_TEST)/out area-no-cos && \
+	tools/grading/gradescope/test.sh $(GRADE_TEST)/class $(GRADE_TEST)/out area-no-cos && \
 	echo "      make test-grade: $$(($$(date +%s) - t0)) s in all"
 
 # The same class through a Slurm job array on a one-node Slurm started for

@@ -1,15 +1,15 @@
 # The mutation run (docs/testing-the-tests.md): realistic student bugs and
-# correct alternatives from tools/mutants/, each applied alone to a scratch
+# correct alternatives from tools/check/mutants/, each applied alone to a scratch
 # tree and put through every step's tests; docs/mutants.md is the result.
 
 # make mutants [MUTANTS=pattern]: the whole set writes docs/mutants.md, a
 # pattern (grep -E on the IDs) writes build/mutants/mutants.md.
 mutants:
-	@tools/mutants.sh $(if $(MUTANTS),'$(MUTANTS)')
+	@tools/check/mutants.sh $(if $(MUTANTS),'$(MUTANTS)')
 
 # make check-mutants: every mutant still applies to the code (no build; seconds).
 check-mutants:
-	@tools/mutants.sh --check
+	@tools/check/mutants.sh --check
 
 .PHONY: mutants check-mutants
 
@@ -21,10 +21,10 @@ check-mutants:
 # make measure-diagnoses puts every mutant through the student's build and
 # counts the verdicts that name their mistake (build/diagnoses/measure.md).
 diagnoses:
-	@tools/diagnoses.sh write $(if $(DIAGNOSES),'$(DIAGNOSES)')
+	@tools/check/diagnoses.sh write $(if $(DIAGNOSES),'$(DIAGNOSES)')
 check-diagnoses:
-	@tools/diagnoses.sh check
+	@tools/check/diagnoses.sh check
 measure-diagnoses:
-	@tools/diagnoses.sh measure $(if $(DIAGNOSES),'$(DIAGNOSES)')
+	@tools/check/diagnoses.sh measure $(if $(DIAGNOSES),'$(DIAGNOSES)')
 
 .PHONY: diagnoses check-diagnoses measure-diagnoses

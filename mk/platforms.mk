@@ -1,5 +1,5 @@
 # make platforms: the course built, tested and rendered on other platforms,
-# every render compared with images/ and with this machine's (tools/platforms.sh;
+# every render compared with images/ and with this machine's (tools/build/platforms.sh;
 # root, the Debian mirror reachable). PLATFORMS picks some of host (gcc and
 # clang here), bookworm and trixie (Debian 12 and 13 from debootstrap: make,
 # make test-step 1 .. 8, FULL=1 make test) and arm64 (cross-built, run under
@@ -7,9 +7,9 @@
 PLATFORMS ?= host bookworm trixie arm64
 
 platforms: $(BINS) $(BUILD)/bin/pfmdiff
-	@BUILD=$(BUILD) tools/platforms.sh $(PLATFORMS)
+	@BUILD=$(BUILD) tools/build/platforms.sh $(PLATFORMS)
 
-$(BUILD)/bin/pfmdiff: $(BUILD)/obj/tools/pfmdiff.o $(LIBCOMMON)
+$(BUILD)/bin/pfmdiff: $(BUILD)/obj/tools/build/pfmdiff.o $(LIBCOMMON)
 	@mkdir -p $(@D)
 	@echo "LD $@"
 	@$(CC) $(CFLAGS) $(LDFLAGS) $^ $(LDLIBS) -o $@

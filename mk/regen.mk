@@ -1,8 +1,8 @@
 # make regen (docs/instructors.md, "Derived files"): every file derived from
 # the sources rebuilt, and written only where its content changed beyond its
-# check's tolerance (tools/regen.sh); a clean tree regenerates to no change.
+# check's tolerance (tools/figures/regen.sh); a clean tree regenerates to no change.
 # It then lists what it wrote and the hand-written places that name what
-# changed (tools/regen-places.sh). REGEN_BENCH=1: make bench too.
+# changed (tools/figures/regen-places.sh). REGEN_BENCH=1: make bench too.
 #   make images, make traces, make diffs, make docimg: one part alone.
 
 # The generators of other derived files, run by make regen after its own
@@ -15,16 +15,16 @@
 REGEN_HOOKS := regen-statements diagnoses
 
 # What the parts run: the steps' programs, the picture comparison, the trace
-# comparison, the docs' pictures' programs (tools/docimg.sh).
+# comparison, the docs' pictures' programs (tools/figures/docimg.sh).
 REGEN_NEEDS = $(BINS) $(BUILD)/bin/imgcmp $(BUILD)/bin/trace-diff $(BUILD)/bin/mistakes
 regen: $(REGEN_NEEDS)
 	@REGEN_HOOKS='$(strip $(REGEN_HOOKS))' REGEN_BENCH='$(REGEN_BENCH)' \
-	  tools/regen.sh $(BUILD) $(PRESENT)
+	  tools/figures/regen.sh $(BUILD) $(PRESENT)
 images traces diffs docimg: $(REGEN_NEEDS)
-	@REGEN_ONLY=$@ tools/regen.sh $(BUILD) $(PRESENT)
+	@REGEN_ONLY=$@ tools/figures/regen.sh $(BUILD) $(PRESENT)
 
 # The docs' pictures against what their generators render now.
 check-docimg: $(REGEN_NEEDS)
-	@tools/docimg.sh check $(BUILD)
+	@tools/figures/docimg.sh check $(BUILD)
 
 .PHONY: regen images traces diffs docimg check-docimg

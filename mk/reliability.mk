@@ -44,7 +44,7 @@ test-reliability: $(BUILD)/tests/reliability
 # its fuller UBSan: float-cast-overflow (in clang's "undefined"), float
 # division by zero and local array bounds besides. Debian's clang, libomp for
 # OpenMP (whose empty files of dead processes in /dev/shm would kill a
-# program with the same PID: tools/omp-stale.sh removes them first).
+# program with the same PID: tools/build/omp-stale.sh removes them first).
 # docs/reliability.md, "Sanitizers".
 ifneq ($(SAN),)
   export LSAN_OPTIONS := suppressions=$(CURDIR)/tests/lsan.supp:print_suppressions=0
@@ -56,7 +56,7 @@ CLANG_SAN_FLAGS := -fsanitize=address,undefined,float-divide-by-zero,local-bound
 clang-deps:
 	@$(call need_debs,$(DEB_CLANG))
 sanitize-clang: clang-deps
-	@tools/omp-stale.sh
+	@tools/build/omp-stale.sh
 	@if [ tests/fuzz/ubsan-ignore.txt -nt build/san-clang/.ignorelist ]; then \
 	  rm -rf build/san-clang/obj; mkdir -p build/san-clang; touch build/san-clang/.ignorelist; fi
 	$(MAKE) BUILD=build/san-clang CC=clang SAN=1 SAN_FLAGS='$(CLANG_SAN_FLAGS)' \

@@ -10,13 +10,13 @@
 STATEMENTS_BIN := $(firstword $(BINS))
 
 regen-statements: $(STATEMENTS_BIN)
-	@tools/statements.sh $<
+	@tools/figures/statements.sh $<
 
 check-statements: $(STATEMENTS_BIN)
-	@tools/statements.sh --check $<
+	@tools/figures/statements.sh --check $<
 
 check-tracked:
-	@tools/check-tracked.sh
+	@tools/check/check-tracked.sh
 
 # Where they run: with the derived files' checks, before the bad-input
 # suite compares the messages, and before a starter is made.

@@ -9,14 +9,14 @@
 
 # FULL=1: every step's test at every stage (the default: step K and K+1).
 check-starter:
-	@tools/check-starter.sh $(BUILD)/check-starter $(if $(FULL),--full)
+	@tools/check/check-starter.sh $(BUILD)/check-starter $(if $(FULL),--full)
 
 check-refs:
-	@tools/check-refs.sh
+	@tools/check/check-refs.sh
 
 check-images: $(BINS) $(BUILD)/bin/imgcmp
-	@tools/images.sh check $(BUILD) $(PRESENT)
-$(BUILD)/bin/imgcmp: $(BUILD)/obj/tools/imgcmp.o $(LIBCOMMON)
+	@tools/figures/images.sh check $(BUILD) $(PRESENT)
+$(BUILD)/bin/imgcmp: $(BUILD)/obj/tools/loop/imgcmp.o $(LIBCOMMON)
 	@mkdir -p $(@D)
 	@echo "LD $@"
 	@$(CC) $(CFLAGS) $(LDFLAGS) $^ $(LDLIBS) -o $@
@@ -26,7 +26,7 @@ $(BUILD)/bin/imgcmp: $(BUILD)/obj/tools/imgcmp.o $(LIBCOMMON)
 # builds, tests and grades without git.
 DIST_NAME ?= raytracer-starter
 dist:
-	@tools/starter.sh $(BUILD)/dist/$(DIST_NAME) $(N) >/dev/null
+	@tools/check/starter.sh $(BUILD)/dist/$(DIST_NAME) $(N) >/dev/null
 	@for f in LICENSE docs/LICENSE; do [ -f $(BUILD)/dist/$(DIST_NAME)/$$f ] || \
 	  { echo "dist: $$f is missing from the starter"; exit 1; }; done
 	@tar -czf $(BUILD)/dist/$(DIST_NAME).tar.gz -C $(BUILD)/dist --sort=name --owner=0 --group=0 \

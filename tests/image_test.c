@@ -82,7 +82,7 @@ static Tolerance tolerance(void)
   return (Tolerance){STEP_IMAGE_TOL, STEP_IMAGE_FRACTION, STEP_IMAGE_MAX};
 }
 
-/* The step's extra options: the manifest's IMAGE_ARGS (tools/manifest.sh
+/* The step's extra options: the manifest's IMAGE_ARGS (tools/build/manifest.sh
  * allows option characters only). */
 static void step_args(char *out, size_t size)
 {

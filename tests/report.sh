@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The report in a real browser (docs/tracing.md, "The report"), run by make
 # check-report after make test wrote BUILD/report/index.html. Headless
-# Chromium renders two reports to screenshots and tools/report-check.c finds
+# Chromium renders two reports to screenshots and tools/check/report-check.c finds
 # every picture of the page in them (a missing or broken picture shows as a
 # small icon instead):
 #   1. BUILD/report/index.html, the one make test just wrote;
@@ -56,10 +56,10 @@ rm -rf "$scratch"
 mkdir -p "$scratch/$build" "$scratch/tools" "$scratch/tests"
 for d in bin tests; do ln -s "$(realpath "$build/$d")" "$scratch/$build/$d"; done
 cp -r images "$scratch/"
-cp tools/report.html "$scratch/tools/"
+cp tools/loop/report.html "$scratch/tools/"
 cp tests/run.sh "$scratch/tests/"
-scene=$(tools/manifest.sh get 04-phong SCENE) && size=$(tools/manifest.sh get 04-phong IMAGE_SIZE) &&
-  args=$(tools/manifest.sh get 04-phong IMAGE_ARGS) && terms=$(tools/manifest.sh get 04-phong IMAGE_TERMS) ||
+scene=$(tools/build/manifest.sh get 04-phong SCENE) && size=$(tools/build/manifest.sh get 04-phong IMAGE_SIZE) &&
+  args=$(tools/build/manifest.sh get 04-phong IMAGE_ARGS) && terms=$(tools/build/manifest.sh get 04-phong IMAGE_TERMS) ||
   { echo "FAIL  report in a browser: cannot read steps/04-phong/step.mk"; exit 1; }
 # The first material line with "specular R G B shininess N", without them.
 awk '!done && $1 == "material" && / specular [-0-9.e]+ [-0-9.e]+ [-0-9.e]+ shininess [0-9.e]+/ {
@@ -76,7 +76,7 @@ for what in "" $terms; do
     --threads 2 --quiet $args ${what:+--aov $what} -o "$scratch/images/04-phong${what:+.$what}.png" || exit 1
 done
 (cd "$scratch" && tests/run.sh "$build/tests/03-camera" "$build/tests/04-phong" > run.log 2>&1
- "$build/bin/report" "$build" tools/report.html > /dev/null)
+ "$build/bin/report" "$build" tools/loop/report.html > /dev/null)
 page=$scratch/$build/report/index.html
 if ! grep -q '<h2>03-camera <span class="pass">' "$page" ||
    ! grep -q '<h2>04-phong <span class="fail">' "$page"; then

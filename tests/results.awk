@@ -3,7 +3,7 @@
 # Variables: name, binary, rc (its exit status), verbose (0/1), out (the
 # JSON's path), counts (a file for "tested passing failing crashing savings
 # bad"), diagnoses (tests/diagnoses.tsv, or "" for none), sigout (a file that
-# gets "NAME CHECK SIGNATURE" for each failing check, or "": tools/diagnoses.sh). Run by tests/run.sh and by the grader (tools/grading/tests.sh).
+# gets "NAME CHECK SIGNATURE" for each failing check, or "": tools/check/diagnoses.sh). Run by tests/run.sh and by the grader (tools/grading/tests.sh).
 function esc(s,    i, c, p) {
   gsub(/\\/, "\\\\\\\\", s); gsub(/"/, "\\\"", s); gsub(/\t/, "\\t", s); gsub(/\r/, "", s)
   gsub(/\n/, "\\n", s)
@@ -19,7 +19,7 @@ function q(s) { return "\"" esc(s) "\"" }
 # messages, with each number rounded to 3 significant digits and the "read
 # DOC" and "this test also runs" lines left out (they name, they do not
 # measure), hashed to 16 hex digits. The same mistake gives the same
-# signature on another compiler or machine; tools/diagnoses.sh records each
+# signature on another compiler or machine; tools/check/diagnoses.sh records each
 # mutant's, and the verdict line names the mutant whose signature it meets.
 function norm(t,    out, line, n, i, lines, num) {
   out = ""
@@ -45,7 +45,7 @@ function hash(t,    i, c, h1, h2) {
   }
   return sprintf("%08x%08x", h1, h2)
 }
-# The diagnoses table (tests/diagnoses.tsv, written by tools/diagnoses.sh):
+# The diagnoses table (tests/diagnoses.tsv, written by tools/check/diagnoses.sh):
 # CHECK SIGNATURE MUTANT STEP WHAT, one a line; '#' lines are comments.
 function load_diagnoses(    line, f) {
   if (diagnoses == "") return

@@ -34,7 +34,7 @@
 # run is never reused: its messages are shown again). The key, a SHA-1, is
 #   the stress tests, step by step (RT_STRESS_ONLY=K runs step K's): every
 #     source the stress program and the programs it runs are built from
-#     (common/, fast/, steps/, tests/ *.c and *.h, tools/mistakes.c), scenes/,
+#     (common/, fast/, steps/, tests/ *.c and *.h, tools/figures/mistakes.c), scenes/,
 #     the Makefile and mk/*.mk, the build's flags and configuration
 #     ($BUILD/.flags, $BUILD/config.mk), with the text of every solution
 #     region of a step after K left out: an edit to step 08's code keeps
@@ -77,7 +77,7 @@ top=$(cd "$(dirname "$0")/.." && pwd)
 # tests/results.awk: TAP report -> verdict lines (stdout) and the results
 # JSON (file); the grader (tools/grading/tests.sh) reads reports with it too.
 results_awk=$top/tests/results.awk
-# The known mistakes' signatures (tools/diagnoses.sh; docs/mutants.md,
+# The known mistakes' signatures (tools/check/diagnoses.sh; docs/mutants.md,
 # "Diagnosis"): a failing check whose signature is there names the mistake.
 diagnoses=$top/tests/diagnoses.tsv
 [ -f "$diagnoses" ] || diagnoses=
@@ -105,7 +105,7 @@ stress_key() {
   if [ -z "$src_keyed" ]; then
     src_keyed=$(mktemp)
     (cd "$top" && {
-      find common fast steps tests -name '*.[ch]' -type f; ls tools/mistakes.c Makefile mk/*.mk scenes/* 2>/dev/null
+      find common fast steps tests -name '*.[ch]' -type f; ls tools/figures/mistakes.c Makefile mk/*.mk scenes/* 2>/dev/null
     } | LC_ALL=C sort | while IFS= read -r f; do printf '0 == %s\n' "$f"; awk '
         /\/\* BEGIN (SOLUTION )?step [0-9]+/ { match($0, /step [0-9]+/); step = substr($0, RSTART + 5, RLENGTH - 5) + 0 }
         { print step + 0, $0 }

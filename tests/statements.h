@@ -1,6 +1,6 @@
 /* The lists an unknown word's message gives, for the tests' expected
  * messages. Generated from the parser's statement table by
- * tools/statements.sh (make regen-statements); do not edit. */
+ * tools/figures/statements.sh (make regen-statements); do not edit. */
 #ifndef RT_TEST_STATEMENTS_H
 #define RT_TEST_STATEMENTS_H
 

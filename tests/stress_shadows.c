@@ -428,7 +428,7 @@ Test(stress, t4_no_acne_and_no_leak_at_any_scale, .timeout = 600)
   require_plain_render(&base, lo, hi, amb);
   stress_table("t4_shadows", "Test 4: pixels with shadow acne (darker than the reference) / "
                "light leaks (brighter), step 05 against a long-double reference, 160x120; "
-               "fixed epsilon = tools/mistakes.c epsilon=1e-4",
+               "fixed epsilon = tools/figures/mistakes.c epsilon=1e-4",
                "| scale | translation | camera | undecidable | step 05 acne | step 05 leak | "
                "fixed-eps acne | fixed-eps leak |\n|---|---|---|---|---|---|---|---|");
   Check c = CHECK_RELYING("ray_spawn, shade_visible (step 05)",

@@ -1,6 +1,6 @@
 /* What the image test (tests/image_test.c) adds for the student: the pictures
  * of the report (build/report/STEP/: expected, yours, difference, and the
- * details tools/report.c reads), and, when the picture is wrong, the Phong
+ * details tools/loop/report.c reads), and, when the picture is wrong, the Phong
  * terms compared one by one (--aov TERM against images/STEP.TERM.png): which
  * differs most, where, and the --trace command for that pixel.
  * docs/tracing.md; README.md, "For students". */

@@ -18,7 +18,7 @@ typedef struct Step {
   vec3s (*pixel)(const Scene *scene, const Film *film, int i, int j);
 } Step;
 
-/* The default scene text, compiled in from scenes/ by tools/scene2c.sh. */
+/* The default scene text, compiled in from scenes/ by tools/build/scene2c.sh. */
 extern const char app_default_scene[];
 extern const char app_default_scene_name[];
 

@@ -23,7 +23,7 @@ bool image_format_known(const char *path);
 bool image_save(const char *path, int w, int h, const float *rgb, Tonemap tm);
 
 /* The writer of every picture the repository keeps (images/, docs/img/,
- * written by make regen through tools/imgcmp.c): a .png through libpng
+ * written by make regen through tools/loop/imgcmp.c): a .png through libpng
  * alone, whatever the build's speed pack, so that every kept picture comes
  * from one encoder. Clamped bytes; atomic like image_save. */
 bool image_save_kept(const char *path, int w, int h, const float *rgb);

@@ -264,7 +264,7 @@ static bool st_light_samples(Parser *p)
  * its scene text; `once` marks the statements a file may hold once. The
  * lists of statements in the expected messages (the .err files of tests/bad/scenes,
  * tests/statements.h) and the fuzzing dictionary are generated from this
- * table by tools/statements.sh (make regen-statements). */
+ * table by tools/figures/statements.sh (make regen-statements). */
 static const struct Statement {
   const char *word;
   bool (*read)(Parser *p);

@@ -1,7 +1,7 @@
 /* Trace lines (common/app/trace_line.h): building them, printing them as
  * indented text or as JSON (one line per trace line, so that the file is
  * valid JSON and each line parses alone), and reading the JSON back
- * (tools/trace-diff.c). README.md, "For students"; docs/tracing.md. */
+ * (tools/loop/trace-diff.c). README.md, "For students"; docs/tracing.md. */
 #include "app/trace_line.h"
 
 #include <stdlib.h>

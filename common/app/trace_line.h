@@ -1,7 +1,7 @@
 /* The lines of a trace (`--trace X Y`, every step from 02): a key, a few
  * named values and the doc that explains them; built by the recorder
  * (app/trace_record.h), printed as indented text or as JSON lines (a trace
- * file), read back by tools/trace-diff.c. docs/tracing.md. */
+ * file), read back by tools/loop/trace-diff.c. docs/tracing.md. */
 #ifndef RT_TRACE_LINE_H
 #define RT_TRACE_LINE_H
 

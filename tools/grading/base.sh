@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The grader's base (docs/grading.md, "How a submission is graded"): from the
-# instructor's tree (its files: tools/files.sh), the solved tree built with
+# instructor's tree (its files: tools/build/files.sh), the solved tree built with
 # the grading flags (its objects seed every scratch build; its binaries
 # render the hidden scenes) and the all-stubbed starter (what a missing file
 # is graded as); the files that hold solution regions; every test the
@@ -11,7 +11,7 @@
 set -euo pipefail
 
 [ $# = 1 ] || { echo "usage: tools/grading/base.sh CACHE" >&2; exit 2; }
-. "$(dirname "$0")/../files.sh"
+. "$(dirname "$0")/../build/files.sh"
 top=$(tree_top)
 cd "$top"
 cache=$(realpath -m -- "$1")
@@ -30,13 +30,13 @@ rm -rf "$dir" "$cache"/base-*
 mkdir -p "$dir"
 : >"$dir/tests.tsv"
 
-tools/starter.sh "$dir/solved" 9 >/dev/null
-tools/starter.sh "$dir/stub" 1 >/dev/null
+tools/check/starter.sh "$dir/solved" 9 >/dev/null
+tools/check/starter.sh "$dir/stub" 1 >/dev/null
 chmod 755 "$dir/solved" "$dir/stub"
 rm -rf "$dir/solved/docs/diffs"   # they quote the solution; nothing builds from them
 
 # The files a submission may replace: C sources and headers under common/ and
-# steps/ that hold a region (found from the markers, tools/files.sh).
+# steps/ that hold a region (found from the markers, tools/build/files.sh).
 region_files "$top" >"$dir/regions.txt"
 # A tree with no solution region is a starter: its tests fail where the
 # student has not written yet, so their times say nothing of a solution's.
@@ -52,12 +52,12 @@ echo "grade: preparing the base (the $( [ "$(cat "$dir/solution.txt")" = none ] 
 
 steps=$(cd steps && ls -d [0-9][0-9]-* | sort)
 targets=$(for s in $steps; do echo "build/bin/$s build/tests/$s"; done)
-# The stress tests render through step 05 and tools/mistakes.c (make test's
+# The stress tests render through step 05 and tools/figures/mistakes.c (make test's
 # prerequisites).
 stress=$(ls tests/stress_*.c >/dev/null 2>&1 && echo build/tests/stress || true)
-[ -z "$stress" ] || [ ! -f tools/mistakes.c ] || stress="$stress build/bin/mistakes"
+[ -z "$stress" ] || [ ! -f tools/figures/mistakes.c ] || stress="$stress build/bin/mistakes"
 # The reference traces (tests/traces/, make trace-step N), where the tree has them.
-traces=$( [ -x tools/traces.sh ] && [ -x tools/manifest.sh ] && [ -f tools/trace-diff.c ] &&
+traces=$( [ -x tools/figures/traces.sh ] && [ -x tools/build/manifest.sh ] && [ -f tools/loop/trace-diff.c ] &&
           echo build/bin/trace-diff || true)
 make -C "$dir/solved" -s -j"$jobs" OPT="$opt" $targets $stress $traces >"$dir/build.log" 2>&1 || {
   echo "grade: the solution does not build with OPT=$opt: see $dir/build.log" >&2; exit 1; }
@@ -97,9 +97,9 @@ fi
 # The steps whose reference traces the solution matches (traces.txt); a
 # starter's traces are the solution's, written when it was handed out.
 for s in $( [ -n "$traces" ] && echo $steps); do
-  tools/manifest.sh traces "$s" 2>/dev/null | grep -q . || continue
+  tools/build/manifest.sh traces "$s" 2>/dev/null | grep -q . || continue
   if [ "$solution" = none ]; then echo "$s"
-  elif (cd "$dir/solved" && tools/traces.sh compare build "$s" >/dev/null 2>&1); then echo "$s"
+  elif (cd "$dir/solved" && tools/figures/traces.sh compare build "$s" >/dev/null 2>&1); then echo "$s"
   else echo "grade: warning: the solution does not match its own reference traces of $s (not graded)" >&2; fi
 done >"$dir/traces.txt"
 rm -rf "$dir/solved/build/test-out" "$dir/solved/build/diff" "$dir/solved/build/out"

@@ -89,7 +89,7 @@ built() {
 # The step's tolerance for pictures: its manifest's IMAGE_TOL ("tol fraction
 # max", tol and max in 1/255; steps/STEP/step.mk).
 step_tolerance() {
-  "$GRADE_BASE/solved/tools/manifest.sh" get "$1" IMAGE_TOL
+  "$GRADE_BASE/solved/tools/build/manifest.sh" get "$1" IMAGE_TOL
 }
 
 # run_traces TREE STEP: the step's reference traces (make trace-step N) in the
@@ -100,7 +100,7 @@ run_traces() {
   grep -qx "$step" "$GRADE_BASE/traces.txt" 2>/dev/null || return 0
   log=$res/logs/$step.traces.log
   sandbox_run "${GRADE_TRACE_WALL:-120}" "${GRADE_TRACE_WALL:-120}" "$log" "$tree" -- \
-    tools/traces.sh compare build "$step"
+    tools/figures/traces.sh compare build "$step"
   st=$?
   if [ $st = 0 ]; then check "$step/traces" PASS "every reference trace agrees"
   else

@@ -3,7 +3,7 @@
 
 esc() { sed -e 's/&/\&amp;/g' -e 's/</\&lt;/g' -e 's/>/\&gt;/g' -e 's/"/\&quot;/g'; }
 
-# The student report's look (tools/report.html's style: verdicts, pictures,
+# The student report's look (tools/loop/report.html's style: verdicts, pictures,
 # the flip), and the few rules the grader's tables and bars add.
 page_head() {
   cat <<EOF
@@ -14,7 +14,7 @@ page_head() {
 <title>$(printf '%s' "$1" | esc)</title>
 <style>
 EOF
-  sed -n '/<style>/,/<\/style>/p' "$GRADE_BASE/solved/tools/report.html" | sed '1d;$d'
+  sed -n '/<style>/,/<\/style>/p' "$GRADE_BASE/solved/tools/loop/report.html" | sed '1d;$d'
   cat <<'EOF'
 h1 small, h2 small { color: #666; font-weight: normal; }
 table.grade { border-collapse: collapse; margin: 0.5em 0 1em; }
@@ -38,7 +38,7 @@ step_rows() {
 
 # picture_block DIR CHECK LINE STATUS: expected | yours | difference and a
 # flip between the first two (the markup of the student report,
-# tools/report.c), the numbers, and for a failing check the --trace command
+# tools/loop/report.c), the numbers, and for a failing check the --trace command
 # of its worst pixel. Pictures at their own size.
 picture_block() {
   local d=$1 c=$2 line=$3 status=$4 kv p step=${2%%/*} id
@@ -61,7 +61,7 @@ picture_block() {
     local cmd="build/bin/$step"
     case $c in
       */reference_image) cmd="$cmd --width ${v[size]%x*} --height ${v[size]#*x}$(
-                           a=$("$GRADE_BASE/solved/tools/manifest.sh" get "$step" IMAGE_ARGS 2>/dev/null); echo "${a:+ $a}")" ;;
+                           a=$("$GRADE_BASE/solved/tools/build/manifest.sh" get "$step" IMAGE_ARGS 2>/dev/null); echo "${a:+ $a}")" ;;
       */hidden/*) cmd="$cmd --scene ${c##*/}.scene --seed $(awk -F'\t' -v c="$c" '$1 == c { print $5 }' "$GRADE_PLAN")" ;;
     esac
     echo ": the largest difference is at pixel (${v[worst_x]}, ${v[worst_y]}) (x from the left, y from the top);"

@@ -5,7 +5,7 @@
 # sandbox, its hidden-scene renders compared with the solution's. Writes
 # RESULTS/checks.tsv (CHECK, PASS or FAIL, why), the failing tests' messages,
 # the pictures and notes that tools/grading/report.sh turns into pages.
-# Usage: tools/grading/one.sh CONFIG SUBMISSION   (CONFIG: written by tools/grade)
+# Usage: tools/grading/one.sh CONFIG SUBMISSION   (CONFIG: written by tools/grading/grade)
 set -uo pipefail
 
 [ $# = 2 ] || { echo "usage: tools/grading/one.sh CONFIG SUBMISSION" >&2; exit 2; }

@@ -4,7 +4,7 @@
 # students named, each from a copy with a script that counts the pictures the
 # browser decoded (the pages themselves have none); every <img> of a page
 # must be decoded, and, with REPORT_CHECK (the student report's checker,
-# tools/report-check.c), found pixel for pixel in the page's screenshot. The
+# tools/check/report-check.c), found pixel for pixel in the page's screenshot. The
 # class page must link every student. Screenshots go to OUT/screenshots/.
 # Without chromium it says SKIP and exits 0.
 # Usage: [REPORT_CHECK=build/bin/report-check] tools/grading/page-test.sh OUT STUDENT...

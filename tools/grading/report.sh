@@ -15,7 +15,7 @@ here=$(cd "$(dirname "$0")" && pwd)
 . "$here/html.sh"
 
 # Every check, in order, with its points (the first matching rule), or 0 with
-# the word "starter" when the untouched starter passes it (GRADE_REF: tools/grade).
+# the word "starter" when the untouched starter passes it (GRADE_REF: tools/grading/grade).
 starter_checks=${GRADE_REF:+$GRADE_REF/students/stub/checks.tsv}
 for s in $(cat "$GRADE_BASE/steps.txt") stress; do step_checks "$s"; done |
   awk -v scheme="$points" -v starter="${starter_checks:-/dev/null}" '

@@ -1,17 +1,17 @@
 #!/usr/bin/env bash
 # The sample class (docs/grading.md, "The sample class"): one submission per
 # entry of tools/grading/sample-class.txt, each the solved starter tree with
-# realistic mistakes applied by tools/mutate.sh, handed in the way the entry
+# realistic mistakes applied by tools/check/mutate.sh, handed in the way the entry
 # says (a folder, a git working tree, .tar.gz, .zip, a git bundle, a bare git
 # repository).
 # Usage: tools/grading/sample-class.sh DIR   (DIR is emptied, then filled)
 set -euo pipefail
 
 [ $# = 1 ] || { echo "usage: tools/grading/sample-class.sh DIR" >&2; exit 2; }
-. "$(dirname "$0")/../files.sh"
+. "$(dirname "$0")/../build/files.sh"
 top=$(tree_top)
 cd "$top"
-[ -x tools/mutate.sh ] || { echo "sample-class: tools/mutate.sh is missing (make mutants brings it)" >&2; exit 1; }
+[ -x tools/check/mutate.sh ] || { echo "sample-class: tools/check/mutate.sh is missing (make mutants brings it)" >&2; exit 1; }
 out=$(realpath -m -- "$1")
 list=tools/grading/sample-class.txt
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/sample-class.XXXXXX")
@@ -26,7 +26,7 @@ g() {
 commit_all() { g -C "$1" init -q && g -C "$1" add -A && g -C "$1" commit -qm "my ray tracer"; }
 
 # The solved tree every submission starts from, and the starters it may stop at.
-tools/starter.sh "$tmp/solved" 9 >/dev/null
+tools/check/starter.sh "$tmp/solved" 9 >/dev/null
 rm -rf "$out"
 mkdir -p "$out"
 n=0
@@ -37,11 +37,11 @@ while IFS= read -r line; do
   mkdir -p "$tmp/work"
   rm -rf "$tree"
   if [[ "$mutants" == starter:* ]]; then
-    tools/starter.sh "$tree" "${mutants#starter:}" >/dev/null
+    tools/check/starter.sh "$tree" "${mutants#starter:}" >/dev/null
   else
     cp -a "$tmp/solved" "$tree"
     if [ "$mutants" != - ]; then
-      for m in ${mutants//+/ }; do tools/mutate.sh "$m" "$tree" >/dev/null; done
+      for m in ${mutants//+/ }; do tools/check/mutate.sh "$m" "$tree" >/dev/null; done
     fi
   fi
   case $form in

@@ -2,7 +2,7 @@
 # make test-grade-slurm (docs/grading.md, "On a few hosts, on a cluster"): a one-node Slurm
 # started here (munged with a fresh key, slurmctld and slurmd as root, on
 # ports of their own), the sample class graded through the job array
-# (tools/grade SLURM=1), grades.csv compared with the local grading's, and
+# (tools/grading/grade SLURM=1), grades.csv compared with the local grading's, and
 # the daemons this script started stopped again. Skips, saying why, where
 # Slurm cannot start.
 # Usage: tools/grading/slurm-test.sh CLASS HIDDEN LOCAL_OUT
@@ -80,8 +80,8 @@ sinfo -h -o %t 2>/dev/null | grep -qx idle ||
 echo "test-grade-slurm: Slurm $(sinfo -V | cut -d' ' -f2) up on $host ($(nproc) CPUs)"
 
 t0=$(date +%s)
-GRADE_CACHE="$local_out/cache" tools/grade SLURM=1 SUBMISSIONS="$class" HIDDEN="$hidden" OUT="$dir/out" ||
-  { echo "test-grade-slurm: tools/grade SLURM=1 failed"; exit 1; }
+GRADE_CACHE="$local_out/cache" tools/grading/grade SLURM=1 SUBMISSIONS="$class" HIDDEN="$hidden" OUT="$dir/out" ||
+  { echo "test-grade-slurm: tools/grading/grade SLURM=1 failed"; exit 1; }
 t=$(( $(date +%s) - t0 ))
 # The local grading's rows of the same students, header included.
 want=$(awk -F, 'FILENAME == ARGV[1] { w[$1] = 1; next } $1 in w' "$dir/out/grades.csv" "$local_out/grades.csv" | sort)

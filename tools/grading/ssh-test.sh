@@ -27,9 +27,9 @@ case "\$*" in *GNU_Parallel_worker*) echo "\$host" >>"$dir/hosts" ;; esac
 exec bash -c "\$*"
 EOF
 chmod +x "$dir/ssh"
-GRADE_SSH=$dir/ssh GRADE_CACHE=$local_out/cache tools/grade SSHLOGIN=1/alpha,1/beta \
+GRADE_SSH=$dir/ssh GRADE_CACHE=$local_out/cache tools/grading/grade SSHLOGIN=1/alpha,1/beta \
   SUBMISSIONS="$dir/class" HIDDEN="$hidden" OUT="$dir/out" >"$dir/log" 2>&1 ||
-  { cat "$dir/log"; echo "test-grade-ssh: FAIL: tools/grade SSHLOGIN=... failed"; exit 1; }
+  { cat "$dir/log"; echo "test-grade-ssh: FAIL: tools/grading/grade SSHLOGIN=... failed"; exit 1; }
 hosts=$(sort -u "$dir/hosts" | tr '\n' ' ')
 [ "$hosts" = "alpha beta " ] || { echo "test-grade-ssh: FAIL: jobs went to: $hosts (expected alpha and beta)"; exit 1; }
 want=$(grep -E '^(flipped-rows|shadow-no-tmax),' "$local_out/grades.csv")
