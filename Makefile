@@ -398,7 +398,7 @@ help:
 	@echo "  make print-flags  the compiler and flags in use"
 	@echo "For instructors (docs/instructors.md; the course checks in tools/check/)"
 	@echo "  make check        make test, then every check of the course, stage by stage:"
-	@echo "    make check-derived   check-diffs, check-refs, check-mutants, check-images, check-traces, check-docimg"
+	@echo "    make check-derived   check-diffs, check-refs, check-mutants, check-diagnoses, check-images, check-traces, check-docimg, check-statements"
 	@echo "    make check-report    the report in headless Chromium"
 	@echo "    make test-grade      grade the sample class and check every verdict, the pages, Gradescope"
 	@echo "    make check-starter   play a student through the starter, step by step, then make test"
