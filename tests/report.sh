@@ -53,11 +53,11 @@ check "make test's report" "$build/report/index.html" "$build/report/screenshot.
 # The scratch copy: the test binaries and programs of BUILD, its own outputs.
 scratch=$build/report-test
 rm -rf "$scratch"
-mkdir -p "$scratch/$build" "$scratch/tools" "$scratch/tests"
+mkdir -p "$scratch/$build" "$scratch/tools/loop" "$scratch/tests"
 for d in bin tests; do ln -s "$(realpath "$build/$d")" "$scratch/$build/$d"; done
 cp -r images "$scratch/"
-cp tools/loop/report.html "$scratch/tools/"
-cp tests/run.sh "$scratch/tests/"
+cp tools/loop/report.html "$scratch/tools/loop/"
+cp tests/run.sh tests/results.awk "$scratch/tests/"
 scene=$(tools/build/manifest.sh get 04-phong SCENE) && size=$(tools/build/manifest.sh get 04-phong IMAGE_SIZE) &&
   args=$(tools/build/manifest.sh get 04-phong IMAGE_ARGS) && terms=$(tools/build/manifest.sh get 04-phong IMAGE_TERMS) ||
   { echo "FAIL  report in a browser: cannot read steps/04-phong/step.mk"; exit 1; }
@@ -75,7 +75,7 @@ for what in "" $terms; do
   "$build/bin/04-phong" --scene "$scratch/broken.scene" --width "${size% *}" --height "${size#* }" \
     --threads 2 --quiet $args ${what:+--aov $what} -o "$scratch/images/04-phong${what:+.$what}.png" || exit 1
 done
-(cd "$scratch" && tests/run.sh "$build/tests/03-camera" "$build/tests/04-phong" > run.log 2>&1
+(cd "$scratch" && RT_CACHE=0 tests/run.sh "$build/tests/03-camera" "$build/tests/04-phong" > run.log 2>&1
  "$build/bin/report" "$build" tools/loop/report.html > /dev/null)
 page=$scratch/$build/report/index.html
 if ! grep -q '<h2>03-camera <span class="pass">' "$page" ||
