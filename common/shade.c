@@ -61,7 +61,9 @@ static SamplerPattern light_pattern(const Scene *scene, int light, const Hit *hi
   memcpy(b, &hit->p, sizeof b);
   Rng r = rng_make(scene->sampler.seed ^ (0x9e3779b9u * (uint32_t)(light + 1)),
                    b[0] ^ (b[2] * 0x85ebca77u), b[1]);
-  return sampler_pattern(scene->sampler.kind, rng_next(&r), rng_next(&r), (uint32_t)n);
+  uint32_t pixel = rng_next(&r);
+  uint32_t seed = rng_next(&r);
+  return sampler_pattern(scene->sampler.kind, seed, pixel, (uint32_t)n);
 }
 
 /* BEGIN SOLUTION step 08 */

@@ -697,7 +697,8 @@ Test(accel, area_light_shadow_rays_give_the_plain_loops_answers)
         int shapes = accel_area_shapes(&s, ray_spawn(&hit, hit.n).o, q, ids, 8);
         kinds[shapes == 0 ? 0 : shapes > 0 ? 1 : 2]++;
         for (int k = 0; k < 32; k++) {
-          vec3s x = quad_point(q, rng_float(&g), rng_float(&g)), to_x = glms_vec3_sub(x, hit.p);
+          float a = rng_float(&g), b = rng_float(&g);
+          vec3s x = quad_point(q, a, b), to_x = glms_vec3_sub(x, hit.p);
           float dist = glms_vec3_norm(to_x);
           vec3s l = glms_vec3_scale(to_x, 1.0f / dist);
           if (!(glms_vec3_dot(hit.n, l) > 0.0f))

@@ -78,7 +78,8 @@ Test(stress, t6_camera_basis_orthonormal_when_up_is_almost_the_view_direction)
                   dz = (long double)eye.z - center.z, n = sqrtl(dx * dx + dy * dy + dz * dz);
       w_dir = fmax(w_dir, (double)fmaxl(fabsl(cam.w.x - dx / n),
                                         fmaxl(fabsl(cam.w.y - dy / n), fabsl(cam.w.z - dz / n))));
-      Ray r = camera_ray(&cam, rng_float(&g), rng_float(&g));
+      float x = rng_float(&g), y = rng_float(&g);
+      Ray r = camera_ray(&cam, x, y);
       CHECK_THAT(&rk, vec_is_finite(r.d) && vec_is_finite(r.o), "camera %d with up %s rad "
                  "from the view direction: the ray is not finite, d = (%g, %g, %g)", k,
                  labels[a], r.d.x, r.d.y, r.d.z);

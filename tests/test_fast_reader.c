@@ -136,7 +136,8 @@ static void number_word(uint64_t *s, char *out, size_t size)
     snprintf(out, size, "%s", pick(s, odd, sizeof odd / sizeof *odd));
     return;
   }
-  double v = ((double)(next(s) % 2000001) - 1000000.0) / pow(10.0, (double)(next(s) % 9));
+  double digits = (double)(next(s) % 2000001) - 1000000.0;
+  double v = digits / pow(10.0, (double)(next(s) % 9));
   static const char *const fmt[] = {"%g", "%.9g", "%.3f", "%e", "%.17g"};
   snprintf(out, size, pick(s, fmt, sizeof fmt / sizeof *fmt), v);
 }

@@ -174,6 +174,13 @@ Test(shadows, grazing_occluders_are_decided_as_the_exact_geometry_says)
   check_grazing(7.0L - 0.5L, 0.5L - 1e-3L, "silhouette across the ray next to the light");
 }
 
+/* A random vector with components in [-0.5, 0.5), drawn x, y, z in turn. */
+static vec3s centred(Rng *rng)
+{
+  float x = rng_float(rng) - 0.5f, y = rng_float(rng) - 0.5f, z = rng_float(rng) - 0.5f;
+  return vec_make(x, y, z);
+}
+
 /* Random hits on the surface of `s`'s instance 0 seen from outside; every one
  * whose normal faces the light must be lit (a convex shape cannot shadow its
  * own lit side: |r n + t w|^2 = r^2 + 2 t r n.w + t^2 |w|^2 > r^2 when
@@ -184,9 +191,9 @@ static void check_not_self_shadowed(Scene *s, vec3s centre, float size, const ch
   int lit = 0, grazing = 0;
   Check c = CHECK_RELYING("ray_spawn, shade_visible", SPAWN_DOC, RELIES);
   for (int k = 0; k < 20000; k++) {
-    vec3s dir = vec_make(rng_float(&rng) - 0.5f, rng_float(&rng) - 0.5f, rng_float(&rng) - 0.5f);
+    vec3s dir = centred(&rng);
     vec3s eye = glms_vec3_add(centre, glms_vec3_scale(glms_vec3_normalize(dir), 10.0f * size));
-    vec3s aim = vec_make(rng_float(&rng) - 0.5f, rng_float(&rng) - 0.5f, rng_float(&rng) - 0.5f);
+    vec3s aim = centred(&rng);
     vec3s target = glms_vec3_add(centre, glms_vec3_scale(aim, 1.9f * size));
     Ray r = {.o = eye, .d = glms_vec3_normalize(glms_vec3_sub(target, eye))};
     Hit h;

@@ -74,6 +74,14 @@ static bool lecture_visible(const Scene *s, const Hit *h, vec3s l, float dist, b
   return visible;
 }
 
+/* A random point of the box lo + [0, size) per axis, drawn x, y, z in turn. */
+static vec3s box_point(Rng *rng, vec3s lo, vec3s size)
+{
+  float x = lo.x + size.x * rng_float(rng), y = lo.y + size.y * rng_float(rng),
+        z = lo.z + size.z * rng_float(rng);
+  return vec_make(x, y, z);
+}
+
 /* Random spheres over a floor, a point and a directional light. */
 static void random_scene(Scene *s, Rng *rng)
 {
@@ -81,12 +89,11 @@ static void random_scene(Scene *s, Rng *rng)
   add_plane(s, vec_make(0.0f, 0.0f, 0.0f), vec_make(0.0f, 1.0f, 0.0f));
   for (int k = 0; k < 8; k++) {
     float r = 0.2f + 0.8f * rng_float(rng);
-    add_sphere(s, vec_make(6.0f * rng_float(rng) - 3.0f, 2.5f * rng_float(rng),
-                           6.0f * rng_float(rng) - 3.0f), r);
+    add_sphere(s, box_point(rng, vec_make(-3.0f, 0.0f, -3.0f), vec_make(6.0f, 2.5f, 6.0f)), r);
   }
-  add_point(s, vec_make(8.0f * rng_float(rng) - 4.0f, 1.0f + 5.0f * rng_float(rng),
-                        8.0f * rng_float(rng) - 4.0f), vec_make(10.0f, 10.0f, 10.0f));
-  add_directional(s, vec_make(rng_float(rng) - 0.5f, -1.0f, rng_float(rng) - 0.5f),
+  add_point(s, box_point(rng, vec_make(-4.0f, 1.0f, -4.0f), vec_make(8.0f, 5.0f, 8.0f)),
+            vec_make(10.0f, 10.0f, 10.0f));
+  add_directional(s, box_point(rng, vec_make(-0.5f, -1.0f, -0.5f), vec_make(1.0f, 0.0f, 1.0f)),
                   vec_make(1.0f, 1.0f, 1.0f));
   prepare(s);
 }
@@ -101,8 +108,7 @@ Test(shadows, agrees_with_the_lectures_closest_hit_method)
     random_scene(&s, &rng);
     for (int k = 0; k < 500; k++) {
       vec3s eye = vec_make(0.0f, 4.0f, 10.0f);
-      vec3s target = vec_make(8.0f * rng_float(&rng) - 4.0f, 2.0f * rng_float(&rng),
-                              8.0f * rng_float(&rng) - 4.0f);
+      vec3s target = box_point(&rng, vec_make(-4.0f, 0.0f, -4.0f), vec_make(8.0f, 2.0f, 8.0f));
       Ray r = {.o = eye, .d = glms_vec3_normalize(glms_vec3_sub(target, eye))};
       Hit h;
       if (!scene_intersect(&s, r, INFINITY, &h))

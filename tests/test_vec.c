@@ -92,7 +92,8 @@ Test(vec, mat4_mulv3_is_the_product_in_one_order)
     for (int i = 0; i < 4; i++)
       for (int k = 0; k < 4; k++)
         m.raw[i][k] = next_unit(&s) * (k == 3 ? 0.0f : 100.0f);
-    vec3s v = vec_make(next_unit(&s), next_unit(&s), next_unit(&s));
+    float x = next_unit(&s), y = next_unit(&s), z = next_unit(&s);
+    vec3s v = vec_make(x, y, z);
     float w = n % 2 ? 1.0f : 0.0f;
     vec3s got = vec_mat4_mulv3(m, v, w), cglm_name = glms_mat4_mulv3(m, v, w);
     for (int k = 0; k < 3; k++) {
