@@ -15,8 +15,9 @@
 REGEN_HOOKS := regen-statements diagnoses
 
 # What the parts run: the steps' programs, the picture comparison, the trace
-# comparison, the docs' pictures' programs (tools/figures/docimg.sh).
-REGEN_NEEDS = $(BINS) $(BUILD)/bin/imgcmp $(BUILD)/bin/trace-diff $(BUILD)/bin/mistakes
+# comparison, the docs' pictures' programs (tools/figures/docimg.sh; the
+# stress tests write the scaled scenes of docs/accuracy.md's pictures).
+REGEN_NEEDS = $(BINS) $(BUILD)/bin/imgcmp $(BUILD)/bin/trace-diff $(BUILD)/bin/mistakes $(STRESSBIN)
 regen: $(REGEN_NEEDS)
 	@REGEN_HOOKS='$(strip $(REGEN_HOOKS))' REGEN_BENCH='$(REGEN_BENCH)' \
 	  tools/figures/regen.sh $(BUILD) $(PRESENT)

@@ -78,6 +78,91 @@ list_other_changes() {
              -o \( -type f -o -type l \) -print0 2>/dev/null | sort -z) | tr -d '\r' >>"$2"
 }
 
+# step_number STEP: the step's number (08); the stress tests' is the highest
+# of the steps whose programs they run (GRADE_BASE/runs.tsv).
+step_number() {
+  if [ "$1" != stress ]; then echo "${1%%-*}"; return; fi
+  awk -F'\t' '$1 == "stress" { print $2 }' "$GRADE_BASE/runs.tsv" 2>/dev/null | tr ' ' '\n' |
+    sed -n 's/^\([0-9][0-9]\)-.*/\1/p' | sort | tail -n 1 | grep . || tail -n 1 "$GRADE_BASE/steps.txt" | cut -c1-2
+}
+
+# cut_builds: the steps of need[] (not built from the whole submission), each
+# given the build of the submission's regions of steps up to M and the
+# starter's stubs for later ones (tools/grading/cut.awk), M from the highest
+# step down; a step takes the first such build, with M at least its own
+# number, that makes its programs (tree_of[STEP]). A cut the previous one's
+# compile errors do not touch is not built again. A file whose markers do not
+# pair with the starter's is taken whole. Uses tree, work, res, need, tree_of.
+cut_builds() {
+  local m s f prev=$tree prev_used=1 vt changed errs left uncut="" used steps_cut=""
+  for m in $(cut -c1-2 "$GRADE_BASE/steps.txt" | sort -r); do
+    left=0
+    for s in "${need[@]}"; do [ -n "${tree_of[$s]:-}" ] || [ "$(step_number "$s")" -gt "$m" ] || left=1; done
+    [ $left = 1 ] || continue
+    vt=$work/upto-$m
+    mkdir -p "$vt.files"
+    changed=()
+    while IFS=$'\t' read -r f how; do
+      [ "$how" = taken ] || continue
+      mkdir -p "$vt.files/$(dirname "$f")"
+      if ! awk -v upto="$m" -f "$here/cut.awk" "$GRADE_BASE/stub/$f" "$tree/$f" >"$vt.files/$f" 2>/dev/null; then
+        cp "$tree/$f" "$vt.files/$f"
+        case " $uncut " in *" $f "*) ;; *) uncut="$uncut${uncut:+ }$f" ;; esac
+      fi
+      cmp -s "$vt.files/$f" "$prev/$f" || changed+=("$f")
+    done <"$res/files.tsv"
+    # The same files, or the last build's errors all in region files this
+    # cut leaves as they were: the same errors again.
+    errs=$(sed -n 's/^\([^ :]*\.[ch]\):[0-9][0-9]*:\([0-9][0-9]*:\)\{0,1\} \(fatal \)\{0,1\}error:.*/\1/p' \
+             "$( [ "$prev" = "$tree" ] && echo "$res/build.log" || echo "$res/logs/build.upto-${prev##*-}.log")" | sort -u)
+    if [ ${#changed[@]} = 0 ] || { [ -n "$errs" ] && ! grep -vqxF -f "$GRADE_BASE/regions.txt" <<<"$errs" &&
+                                     ! printf '%s\n' "${changed[@]}" | grep -qxF -f <(echo "$errs"); }; then
+      rm -rf "$vt.files"; continue
+    fi
+    # A cut tree that graded no step is rebuilt in place.
+    if [ "$prev_used" = 0 ]; then mv "$prev" "$vt"; else cp -a "$prev" "$vt"; fi
+    for f in "${changed[@]}"; do
+      rm -f "$vt/$f" "$vt/build/obj/${f%.*}.o"
+      cp "$vt.files/$f" "$vt/$f"
+    done
+    rm -rf "$vt.files"
+    sandbox_own "$vt"
+    mkdir -p "$res/logs"
+    sandbox_run "${GRADE_BUILD_WALL:-600}" "${GRADE_BUILD_CPU:-600}" "$res/logs/build.upto-$m.log" "$vt" -- \
+      make -k -j"$GRADE_THREADS" OPT="$GRADE_OPT" $(cat "$GRADE_BASE/targets.txt")
+    [ $? -lt 124 ] || break
+    used=0
+    for s in "${need[@]}"; do
+      [ -z "${tree_of[$s]:-}" ] && [ "$(step_number "$s")" -le "$m" ] && built "$vt" "$s" || continue
+      tree_of[$s]=$vt used=1 steps_cut="$steps_cut${steps_cut:+ }$s:$m"
+    done
+    prev=$vt prev_used=$used
+  done
+  [ -z "$steps_cut" ] || info stubbed "$(cut_words "$steps_cut")"
+  [ -z "$uncut" ] || info uncut "$uncut: its region markers differ from the starter's, so it was taken whole for every step"
+  return 0
+}
+
+# cut_words "STEP:M ...": the page's words for the steps graded with later
+# regions stubbed.
+cut_words() {
+  local s m last="" list="" out=""
+  for s in $1; do
+    m=${s#*:}
+    if [ "$m" != "$last" ] && [ -n "$list" ]; then out="$out${out:+; }$(cut_sentence "$list" "$last")"; list=""; fi
+    list="$list${list:+, }${s%:*}" last=$m
+  done
+  out="$out${out:+; }$(cut_sentence "$list" "$last")"
+  echo "the whole submission did not build: $out"
+}
+cut_sentence() {
+  local later
+  later=$(cut -c1-2 "$GRADE_BASE/steps.txt" | awk -v m="$2" '$1 + 0 > m + 0 { s[++n] = $1 }
+    END { for (k = 1; k <= n; k++) printf "%s%s", k == 1 ? "" : k == n ? " and " : ", ", s[k] }')
+  echo "$1 graded with your regions of steps $(head -n 1 "$GRADE_BASE/steps.txt" | cut -c1-2) to $2" \
+       "and the starter's stubs for step$( [ "${later#* }" = "$later" ] || echo s) $later"
+}
+
 # built TREE STEP: the step's binary and test program (or the stress tests)
 # were made by this build.
 built() {

@@ -78,7 +78,8 @@ student_page() {
   echo "<p><a href=\"../../index.html\">class</a></p>"
   echo "<h1>$(printf '%s' "$st" | esc) <small>$total / $max points</small></h1>"
   echo "<table class='grade'>"
-  for k in kind source host sandbox build build_seconds reused seconds; do
+  for k in kind source host sandbox build build_seconds stubbed uncut reused seconds; do
+    case $k in stubbed|uncut) [ -n "$(info_get "$d" $k)" ] || continue ;; esac
     printf '<tr><th>%s</th><td>%s</td></tr>\n' "${k//_/ }" "$(info_get "$d" $k | esc)"
   done
   echo "</table>"

@@ -55,6 +55,21 @@ sandbox_run "${GRADE_BUILD_WALL:-600}" "${GRADE_BUILD_CPU:-600}" "$res/build.log
   make -k -j"$GRADE_THREADS" OPT="$GRADE_OPT" $(cat "$GRADE_BASE/targets.txt")
 st=$?
 info build "$(sandbox_status_text $st "${GRADE_BUILD_WALL:-600}" "${GRADE_BUILD_CPU:-600}")"
+
+# ---------------------------------------------------------------- steps cut
+# A step is graded by the build that made its programs. Where the whole
+# submission did not build one, the step takes the build of the submission's
+# regions of steps up to M, the later steps' regions the starter's stubs
+# (tools/grading/cut.awk), for the highest M from the step's own up that
+# builds it: a region that does not compile costs its own step and the later
+# ones only (docs/grading.md, "How a submission is graded").
+declare -A tree_of
+need=()
+for step in $(cat "$GRADE_BASE/steps.txt") stress; do
+  grep -q "^$step	" "$GRADE_BASE/tests.tsv" || continue
+  if built "$tree" "$step"; then tree_of[$step]=$tree; else need+=("$step"); fi
+done
+[ ${#need[@]} = 0 ] || [ "$st" -ge 124 ] || cut_builds
 info build_seconds "$(seconds_since "$tb")"
 
 # ---------------------------------------------------------------- checks
@@ -65,17 +80,18 @@ HASHES=$work/hashes
 mkdir -p "$HASHES"
 for step in $(cat "$GRADE_BASE/steps.txt") stress; do
   grep -q "^$step	" "$GRADE_BASE/tests.tsv" || continue
-  if built "$tree" "$step"; then
-    key=$(step_key "$tree" "$step")
+  if [ -n "${tree_of[$step]:-}" ]; then
+    step_tree=${tree_of[$step]}
+    key=$(step_key "$step_tree" "$step")
     if step_reuse "$key" "$step"; then
       reused="$reused${reused:+ }$step"
       continue
     fi
     ts=$(now)
-    run_tests "$tree" "$step"
+    run_tests "$step_tree" "$step"
     info "tests_seconds $step" "$(seconds_since "$ts")"
     ts=$(now)
-    [ "$step" = stress ] || { run_traces "$tree" "$step"; image_pictures "$tree" "$step"; run_hidden "$tree" "$step"; }
+    [ "$step" = stress ] || { run_traces "$step_tree" "$step"; image_pictures "$step_tree" "$step"; run_hidden "$step_tree" "$step"; }
     info "hidden_seconds $step" "$(seconds_since "$ts")"
     step_save "$key" "$step"
   else

@@ -5,6 +5,10 @@
  *   imgcmp A B           exit 0 when every channel is equal, 1 when some
  *                        differ (one line says how), 2 when a file cannot be
  *                        read or the sizes differ
+ *   imgcmp --edge N,T,F ...  before either form: the pictures also agree
+ *                        when at most a fraction F of the pixels differ and
+ *                        every N x N block's mean is within T codes (a picture
+ *                        of shadow acne, on a knife edge: agree() says why)
  *   imgcmp --put KEPT NEW  write KEPT from NEW's pixels (image_save_kept, the
  *                        one writer of kept pictures) when it is missing, of
  *                        another size or differs in any channel; one line
@@ -42,6 +46,51 @@ static long differ(const Picture *a, const Picture *b, long *max_codes)
   return pixels;
 }
 
+/* The largest difference, in codes, between the means of a channel over the
+ * same n x n block of the two pictures (blocks cut at the right and bottom
+ * edges). */
+static double block_mean_diff(const Picture *a, const Picture *b, int n)
+{
+  double worst = 0.0;
+  for (int y0 = 0; y0 < a->h; y0 += n) {
+    for (int x0 = 0; x0 < a->w; x0 += n) {
+      double sum[3] = {0.0, 0.0, 0.0};
+      int count = 0;
+      for (int y = y0; y < y0 + n && y < a->h; y++) {
+        for (int x = x0; x < x0 + n && x < a->w; x++, count++) {
+          long p = (long)y * a->w + x;
+          for (int c = 0; c < 3; c++)
+            sum[c] += lroundf(255.0f * a->rgb[3 * p + c]) - lroundf(255.0f * b->rgb[3 * p + c]);
+        }
+      }
+      for (int c = 0; c < 3; c++)
+        worst = fmax(worst, fabs(sum[c]) / count);
+    }
+  }
+  return worst;
+}
+
+/* The knife-edge tolerance (--edge N,T,F), for a picture of shadow acne,
+ * whose pixels each fall lit or dark on the last bit of a hit point: the
+ * pictures agree when at most a fraction F of the pixels differ, and every
+ * N x N block's mean differs by at most T codes in every channel (the same
+ * density of acne, wherever its pixels fall). */
+static int edge_n;
+static double edge_t, edge_f;
+
+/* Whether a and b agree: equal in every channel, or within the knife-edge
+ * tolerance when one is set. */
+static bool agree(const Picture *a, const Picture *b, long pixels, double *block)
+{
+  *block = 0.0;
+  if (pixels == 0)
+    return true;
+  if (edge_n <= 0)
+    return false;
+  *block = block_mean_diff(a, b, edge_n);
+  return *block <= edge_t && (double)pixels <= edge_f * a->w * a->h;
+}
+
 static int put(const char *kept, const char *new_path)
 {
   Picture n, k = {0, 0, NULL};
@@ -56,7 +105,8 @@ static int put(const char *kept, const char *new_path)
     snprintf(why, sizeof why, "%dx%d, was %dx%d", n.w, n.h, k.w, k.h);
   } else {
     long max_codes, pixels = differ(&k, &n, &max_codes);
-    if (pixels == 0) {
+    double block;
+    if (agree(&k, &n, pixels, &block)) {
       free(k.rgb);
       free(n.rgb);
       return 0;
@@ -74,6 +124,16 @@ static int put(const char *kept, const char *new_path)
 
 int main(int argc, char **argv)
 {
+  if (argc >= 3 && strcmp(argv[1], "--edge") == 0) {
+    if (sscanf(argv[2], "%d,%lf,%lf", &edge_n, &edge_t, &edge_f) != 3 || edge_n < 1 ||
+        !(edge_t >= 0.0) || !(edge_f >= 0.0 && edge_f <= 1.0)) {
+      fprintf(stderr, "imgcmp: --edge N,T,F: a block size, its mean's tolerance in codes and "
+                      "the fraction of pixels that may differ\n");
+      return 2;
+    }
+    argc -= 2;
+    argv += 2;
+  }
   if (argc >= 2 && strcmp(argv[1], "--recode") == 0) {
     for (int k = 2; k < argc; k++) {
       Picture p;
@@ -86,7 +146,7 @@ int main(int argc, char **argv)
   if (argc == 4 && strcmp(argv[1], "--put") == 0)
     return put(argv[2], argv[3]);
   if (argc != 3) {
-    fprintf(stderr, "usage: imgcmp A B | --put KEPT NEW | --recode FILE...\n");
+    fprintf(stderr, "usage: imgcmp [--edge N,T,F] A B | [--edge N,T,F] --put KEPT NEW | --recode FILE...\n");
     return 2;
   }
   Picture a, b;
@@ -97,11 +157,17 @@ int main(int argc, char **argv)
     return 2;
   }
   long max_codes, pixels = differ(&a, &b, &max_codes);
+  double block;
+  bool same = agree(&a, &b, pixels, &block);
   free(a.rgb);
   free(b.rgb);
   if (pixels == 0)
     return 0;
-  printf("%ld of %ld pixels differ, by up to %ld code%s\n", pixels, (long)a.w * a.h, max_codes,
+  printf("%ld of %ld pixels differ, by up to %ld code%s", pixels, (long)a.w * a.h, max_codes,
          max_codes == 1 ? "" : "s");
-  return 1;
+  if (edge_n > 0)
+    printf(" (allowed %.0f); %dx%d block means by up to %.1f codes (allowed %g)",
+           edge_f * a.w * a.h, edge_n, edge_n, block, edge_t);
+  printf("\n");
+  return same ? 0 : 1;
 }

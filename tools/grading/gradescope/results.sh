@@ -12,6 +12,7 @@ summary=$( {
   awk -F'\t' '$2 == "missing" { print "Not in your submission, graded as the starter'"'"'s stub: " $1 }
               $2 == "changed" { print "Changed in your submission but not used (the course'"'"'s copy is): " $1 }
               $2 == "added" { print "Added in your submission, not used: " $1 }' "$d/files.tsv" 2>/dev/null | head -n 50
+  awk -F'\t' '$1 == "stubbed" || $1 == "uncut" { print "Build: " $2 }' "$d/info.tsv"
   if grep -q 'error' "$d/build.log" 2>/dev/null; then
     echo; echo "Build errors:"; grep -E -A3 'error' "$d/build.log" | head -n 40
   fi
