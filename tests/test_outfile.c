@@ -137,7 +137,11 @@ Test(outfile, ignored_signals_stay_ignored_and_handlers_come_back)
              "again");
 }
 
-/* Noise (an LCG) that PNG cannot compress below 1000 bytes. */
+/* Noise (an LCG) that PNG cannot compress below 1000 bytes. Its bytes come
+ * from film_to_byte, which a starter's step 01 stubs to 0 for every
+ * channel: the picture is BIG x BIG so that even a constant one stays over
+ * 1000 bytes (deflate shrinks a run at most about 1000 times; 3 MiB of bytes). */
+enum { BIG = 1024 };
 static float *noise(int n)
 {
   float *rgb = malloc((size_t)n * 3 * sizeof *rgb);
@@ -154,7 +158,7 @@ Test(outfile, a_file_size_limit_ends_the_program_without_a_trace)
   /* RLIMIT_FSIZE with SIGXFSZ's default action: the write kills the program. */
   Check c = CHECK("outfile_open", DOC);
   put(DIR_ "/big.png", OLD, 0644);
-  float *rgb = noise(64 * 64);
+  float *rgb = noise(BIG * BIG);
   fflush(NULL);
   pid_t pid = fork();
   cr_assert(pid >= 0);
@@ -162,7 +166,7 @@ Test(outfile, a_file_size_limit_ends_the_program_without_a_trace)
     (void)omp_get_max_threads(); /* as below: the runtime started before the limit */
     struct rlimit lim = {1000, 1000};
     setrlimit(RLIMIT_FSIZE, &lim);
-    image_save(DIR_ "/big.png", 64, 64, rgb, TONEMAP_CLAMP);
+    image_save(DIR_ "/big.png", BIG, BIG, rgb, TONEMAP_CLAMP);
     _exit(4);
   }
   int status;
@@ -178,7 +182,7 @@ Test(outfile, a_failed_png_write_says_one_line_of_its_own)
 {
   /* SIGXFSZ ignored: the write fails with EFBIG inside libpng. */
   put(DIR_ "/fail.png", OLD, 0644);
-  float *rgb = noise(64 * 64);
+  float *rgb = noise(BIG * BIG);
   /* Start the OpenMP runtime first, as a render does (the PNG's bands go to
    * threads): LLVM's writes a shared-memory file when it starts, which the
    * limit refuses, and then stops (make sanitize-clang). */
@@ -190,7 +194,7 @@ Test(outfile, a_failed_png_write_says_one_line_of_its_own)
   FILE *tmp = tmpfile();
   int saved = dup(2);
   dup2(fileno(tmp), 2);
-  bool ok = image_save(DIR_ "/fail.png", 64, 64, rgb, TONEMAP_CLAMP);
+  bool ok = image_save(DIR_ "/fail.png", BIG, BIG, rgb, TONEMAP_CLAMP);
   fflush(stderr);
   dup2(saved, 2);
   close(saved);
