@@ -193,6 +193,9 @@ $(BUILD)/obj/%.o: %.c | $(BUILD)/.deps
 # without LTO, which shortens the programs' link (pictures the same, renders
 # as fast: docs/performance.md, "Build flags").
 $(BUILD)/obj/common/app/%.o: CFLAGS += $(TEST_OBJ_FLAGS)
+# The speed pack's compiler hints for the shading (fast/hints.h), read
+# ahead of common/shade.c so that the student's file holds none.
+$(BUILD)/obj/common/shade.o: CFLAGS += $(if $(filter 0,$(FAST)),,-include fast/hints.h)
 # stb's own code, not ours: its warnings are not the course's.
 $(BUILD)/obj/common/app/stb_impl.o: CFLAGS += -w
 $(LIBCOMMON): $(COMMON_OBJ)
