@@ -193,6 +193,9 @@ $(BUILD)/obj/%.o: %.c | $(BUILD)/.deps
 # without LTO, which shortens the programs' link (pictures the same, renders
 # as fast: docs/performance.md, "Build flags").
 $(BUILD)/obj/common/app/%.o: CFLAGS += $(TEST_OBJ_FLAGS)
+# The speed pack's compiler hints for the shading (fast/hints.h), read
+# ahead of common/shade.c so that the student's file holds none.
+$(BUILD)/obj/common/shade.o: CFLAGS += $(if $(filter 0,$(FAST)),,-include fast/hints.h)
 # stb's own code, not ours: its warnings are not the course's.
 $(BUILD)/obj/common/app/stb_impl.o: CFLAGS += -w
 $(LIBCOMMON): $(COMMON_OBJ)
@@ -365,7 +368,7 @@ clean:
 # .ci/run runs the same stages one by one (with check-regions-ci).
 CHECK_REGIONS ?= check-regions
 # A stage's targets joined by '+'.
-CHECK_STAGES = test check-derived check-report test-grade check-starter+$(CHECK_REGIONS) sanitize fuzz
+CHECK_STAGES = test check-derived check-report check-compilers test-grade check-starter+$(CHECK_REGIONS) sanitize fuzz
 check:
 	@bad=; for s in $(CHECK_STAGES); do s=$${s//+/ }; t0=$$(date +%s); \
 	  echo "==== make check: $$s"; \
@@ -400,6 +403,7 @@ help:
 	@echo "  make check        make test, then every check of the course, stage by stage:"
 	@echo "    make check-derived   check-diffs, check-refs, check-mutants, check-diagnoses, check-images, check-traces, check-docimg, check-statements"
 	@echo "    make check-report    the report in headless Chromium"
+	@echo "    make check-compilers clang, gcc without OpenMP and gcc -march=native draw this build's floats"
 	@echo "    make test-grade      grade the sample class and check every verdict, the pages, Gradescope"
 	@echo "    make check-starter   play a student through the starter, step by step, then make test"
 	@echo "    make check-regions   stub each solution region alone: its step and later pictures must fail"

@@ -11,6 +11,20 @@ total=${1:-?}; POV=${2:-}; ALL=${3:-2}; LOADS=${4:-? ?}
 TARGET=5e-4
 
 # table CSV: a Markdown table of a CSV file.
+# vs_section: the body of "Against another build" (bench/run.sh, part vs).
+vs_section() {
+  if [ -s "$D/vs.txt" ] && [ "$(wc -l < "$D/vs.csv" 2>/dev/null || echo 0)" -gt 1 ]; then
+    echo "Steps 04-08's default renders (800x600, 2 threads) by this build and by"
+    echo 'the one in `'"$(cat "$D/vs.txt")"'`, in turn (`BENCH_VS=DIR make bench`): whole-process'
+    echo "time (s, medians) and the median, least and largest of the pairs' ratios"
+    echo "(this / other; below 1, this build is faster)."
+    echo
+    table "$D/vs.csv"
+  else
+    echo 'Not measured in this run: `BENCH_VS=DIR make bench` (DIR: another tree'"'"'s'
+    echo '`build/bin`, e.g. an older commit'"'"'s) times this build against it.'
+  fi
+}
 table() {
   awk -F, 'NR == 1 {h = "|"; s = "|"; for (i = 1; i <= NF; i++) {h = h " " $i " |"; s = s "---|"}
     print h; print s; next} {r = "|"; for (i = 1; i <= NF; i++) r = r " " $i " |"; print r}' "$1"
@@ -233,15 +247,9 @@ EOF
 if [ -n "$POV" ]; then table "$D/povray.csv"; else echo "POV-Ray is not installed (\`apt-get install povray\`): its rows are empty."; fi
 cat <<EOF
 
-## Tracing compiled in but off
+## Against another build
 
-\`--trace\` and \`--aov\` hook into the steps' glue code (docs/tracing.md). The
-same steps built with the hooks compiled out (\`make TRACE_OFF=1\`, in
-build/bench-notrace), both builds run in turn, 2 threads, 800x600 (step 05 on
-scenes/spheres.scene, step 08 on its default scene, its area light): trace and whole-process time (s, medians) and the median of the
-pairs' ratios (with hooks / without; 1 = no change).
-
-$(table "$D/trace-off.csv" 2>/dev/null)
+$(vs_section)
 
 ## Without the speed pack
 

@@ -8,15 +8,16 @@
 # their medians move least with more pairs), BENCH_ERR_RUNS (3) of the error
 # sweeps, THREADS_ALL (default: nproc) the "all cores" thread count,
 # BENCH_PARTS (default: all of them) the parts to run, among: throughput
-# tracing nopack step05 error07 error08 threads scaling report (threads reads the
+# vs nopack step05 error07 error08 threads scaling report (threads reads the
 # error CSVs; report reads them all), BENCH_PREBUILT=1 to use the programs
 # already in build/ (build/bin, build/bench-notrace, build/bench/gen_spheres
-# and rmse) without compiling anything: a machine that runs but cannot build.
+# and rmse) without compiling anything: a machine that runs but cannot build;
+# BENCH_VS=DIR another build's bin/ folder, timed against this one (part vs).
 set -uo pipefail
 cd "$(dirname "$0")/.."
 B=build/bench; D=docs/bench; BIN=build/bin; REF=$B/refs
 RUNS=${BENCH_RUNS:-9}; PAIRS=${BENCH_PAIRS:-21}; ERUNS=${BENCH_ERR_RUNS:-3}; ALL=${THREADS_ALL:-$(nproc)}
-PARTS=" ${BENCH_PARTS:-throughput tracing nopack step05 error07 error08 threads scaling report} "
+PARTS=" ${BENCH_PARTS:-throughput vs nopack step05 error07 error08 threads scaling report} "
 PRESENT_STEPS=$(cd "$BIN" 2>/dev/null && ls -d [0-9][0-9]-* 2>/dev/null)
 PREBUILT=${BENCH_PREBUILT:-}
 part() { [[ "$PARTS" == *" $1 "* ]]; }
@@ -112,31 +113,29 @@ if [ -n "$POV" ]; then
 fi
 fi
 
-# Tracing compiled in but off (docs/tracing.md): steps 05 and 08 built again
-# with the hooks compiled out (make TRACE_OFF=1, in build/bench-notrace), the
-# two builds run in turn, medians and the median of the pairs' ratios.
-NT=build/bench-notrace
-if part tracing; then
-echo "step,pairs,trace_with_hooks,trace_without,trace_ratio,wall_with_hooks,wall_without,wall_ratio" > "$D/trace-off.csv"
-if { [ -n "$PREBUILT" ] && [ -x "$NT/bin/05-shadows" ] && [ -x "$NT/bin/08-area-lights" ]; } ||
-   make --no-print-directory BUILD=$NT TRACE_OFF=1 $NT/bin/05-shadows $NT/bin/08-area-lights \
-     >"$B/notrace.log" 2>&1; then
-  log "tracing off: steps 05 and 08, with and without the hooks, in turn ($((2 * RUNS)) pairs)"
-  for s in 05-shadows 08-area-lights; do
-    have "$s" || continue
-    sc=(--scene scenes/spheres.scene); [ "$s" = 08-area-lights ] && sc=() # its area light
-    pairs=$(for _ in $(seq $((2 * RUNS))); do
-      a=$(ours "$s" "${sc[@]}" --threads 2 -o "$B/tp.png")
-      b=$(BIN=$NT/bin ours "$s" "${sc[@]}" --threads 2 -o "$B/tp.png")
+# Against another build (BENCH_VS=DIR, the bin/ folder of another tree's
+# build, e.g. an older commit's): steps 04-08's default renders by this build
+# and by that one, in turn, 2 threads, the whole process; medians, and the
+# median and range of the pairs' ratios (this / other; below 1, this one is
+# faster).
+if part vs; then
+echo "step,pairs,wall_this,wall_other,ratio_med,ratio_min,ratio_max" > "$D/vs.csv"
+if [ -n "${BENCH_VS:-}" ] && [ -x "$BENCH_VS/05-shadows" ]; then
+  log "against $BENCH_VS: steps 04-08, this build and that one in turn ($RUNS pairs)"
+  for s in 04-phong 05-shadows 06-ambient 07-antialiasing 08-area-lights; do
+    { have "$s" && [ -x "$BENCH_VS/$s" ]; } || continue
+    pairs=$(for _ in $(seq "$RUNS"); do
+      a=$(ours "$s" --threads 2 -o "$B/vs.png"); b=$(BIN=$BENCH_VS ours "$s" --threads 2 -o "$B/vs.png")
       echo "$a $b"
     done)
-    # columns: trace mrays wall (with), trace mrays wall (without)
+    r=$(awk '{print $3 / $6}' <<<"$pairs" | stats | tr ' ' ,)
     m() { awk "{print $1}" <<<"$pairs" | stats | cut -d' ' -f1; }
-    echo "$s,$((2 * RUNS)),$(m '$1'),$(m '$4'),$(m '$1 / $4'),$(m '$3'),$(m '$6'),$(m '$3 / $6')" \
-      >> "$D/trace-off.csv"
+    echo "$s,$RUNS,$(m '$3'),$(m '$6'),$r" >> "$D/vs.csv"
   done
+  echo "$BENCH_VS" > "$D/vs.txt"
 else
-  log "tracing off: the build without hooks failed ($B/notrace.log)"
+  log "against another build: BENCH_VS not set (or no programs in it): skipped"
+  : > "$D/vs.txt"
 fi
 fi
 

@@ -169,12 +169,7 @@ vec3s shade_trace(const Scene *scene, Ray ray)
   return shade_phong(scene, &hit, ray.o);
 }
 
-/* flatten: every shading function it calls compiled into it, one body per
- * camera sample (gcc and clang). Without it the compiler keeps
- * shade_visible, shade_incident and scene_intersect as calls, since the
- * tracer and step 08's shade_area call them too: step 05 renders about 1.2x
- * slower (farm-bench --vs, one thread). */
-__attribute__((flatten)) vec3s shade_sample(const Scene *scene, float x, float y)
+vec3s shade_sample(const Scene *scene, float x, float y)
 {
   return shade_trace(scene, camera_ray(&scene->camera, x, y));
 }

@@ -9,9 +9,16 @@ PLATFORMS ?= host bookworm trixie arm64
 platforms: $(BINS) $(BUILD)/bin/pfmdiff
 	@BUILD=$(BUILD) tools/build/platforms.sh $(PLATFORMS)
 
+# make check-compilers: the host platform alone (no root): clang, gcc without
+# OpenMP and gcc -march=native built beside this build, each drawing every
+# reference render, and steps 07-08 with every sampler, float for float as
+# this build does (one float that differs fails).
+check-compilers: clang-deps $(BINS) $(BUILD)/bin/pfmdiff
+	@BUILD=$(BUILD) tools/build/platforms.sh host
+
 $(BUILD)/bin/pfmdiff: $(BUILD)/obj/tools/build/pfmdiff.o $(LIBCOMMON)
 	@mkdir -p $(@D)
 	@echo "LD $@"
 	@$(CC) $(CFLAGS) $(LDFLAGS) $^ $(LDLIBS) -o $@
 
-.PHONY: platforms
+.PHONY: platforms check-compilers

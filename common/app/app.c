@@ -15,7 +15,9 @@
 #include "app/trace_pixel.h"
 #include "sampler.h"
 
-/* Say once what the step leaves out of this scene or command line. */
+/* Say once what the step leaves out of this scene (scene_prepare's
+ * info.ignored: the scene's own values and the command line's alike) or of
+ * the command line's sampling options. */
 static void say_ignored(const Step *step, const Options *o, unsigned ignored)
 {
   static const struct {
@@ -32,11 +34,9 @@ static void say_ignored(const Step *step, const Options *o, unsigned ignored)
     if (ignored & parts[k].bit)
       fprintf(stderr, "%s: ignoring %s\n", step->name, parts[k].what);
   bool sampling = step->features & SCENE_SAMPLES;
-  if (!sampling && (o->samples || o->sampler || o->adaptive >= 0.0f || o->seed != 1))
-    fprintf(stderr, "%s: ignoring --samples, --sampler, --adaptive and --seed "
+  if (!sampling && (o->sampler || o->adaptive >= 0.0f || o->seed != 1))
+    fprintf(stderr, "%s: ignoring --sampler, --adaptive and --seed "
             "(antialiasing is step 07)\n", step->name);
-  if (!(step->features & SCENE_AREA_LIGHTS) && o->light_samples)
-    fprintf(stderr, "%s: ignoring --light-samples (step 08)\n", step->name);
 }
 
 static bool load(const Step *step, const Options *o, Scene *scene)
@@ -48,7 +48,10 @@ static bool load(const Step *step, const Options *o, Scene *scene)
                             app_default_scene, scene);
 }
 
-/* Command-line values win over the scene's. */
+/* Command-line values win over the scene's: the film's size, the sample
+ * counts and where the samples go. The counts then live in the scene alone
+ * (Scene.samples, Scene.light_samples); what the step cannot render of them,
+ * scene_prepare drops, whichever gave them. */
 static bool override(const Step *step, const Options *o, Scene *scene)
 {
   if (o->width)
@@ -60,10 +63,14 @@ static bool override(const Step *step, const Options *o, Scene *scene)
             FILM_MAX_PIXELS, scene->width, scene->height);
     return false;
   }
-  if (o->samples && (step->features & SCENE_SAMPLES))
+  if (o->samples)
     scene->samples = o->samples;
-  if (o->light_samples && (step->features & SCENE_AREA_LIGHTS))
+  if (o->light_samples)
     scene->light_samples = o->light_samples;
+  SamplerKind kind = SAMPLER_CENTER;
+  sampler_parse(o->sampler ? o->sampler : step->sampler ? step->sampler : "center", &kind);
+  scene->sampler = (Sampler){.kind = kind, .seed = o->seed,
+                             .adaptive = o->adaptive >= 0.0f ? o->adaptive : step->adaptive};
   return true;
 }
 
@@ -170,16 +177,11 @@ int app_run(int argc, char **argv, const Step *step)
     scene_free(&scene);
     return 2;
   }
-  say_ignored(step, &o, 0);
   if (!scene_prepare(&scene, step->features) || !pack_index(&scene)) {
     scene_free(&scene);
     return 1;
   }
-  say_ignored(step, &(Options){.seed = 1, .adaptive = -1.0f}, scene.info.ignored);
-  SamplerKind kind = SAMPLER_CENTER;
-  sampler_parse(o.sampler ? o.sampler : step->sampler ? step->sampler : "center", &kind);
-  scene.sampler = (Sampler){.kind = kind, .seed = o.seed,
-                            .adaptive = o.adaptive >= 0.0f ? o.adaptive : step->adaptive};
+  say_ignored(step, &o, scene.info.ignored);
   RenderSettings set = {.threads = o.threads, .progress = !o.quiet};
   if (o.trace_x >= 0) {
     int status = run_trace(argc, argv, step, &o, &scene);

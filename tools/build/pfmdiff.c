@@ -8,7 +8,8 @@
  * .pfm, how many floats differ at all (and by how much, unclamped). Exit 0 when no
  * channel exceeds MAX and at most FRACTION of them exceed TOL (the image
  * test's defaults: 1.5 0.001 16), 1 otherwise, 2 when a file cannot be read
- * or the sizes differ. */
+ * or the sizes differ. MAX 0 between two .pfm asks for every float equal,
+ * those past 1 included. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -56,6 +57,8 @@ int main(int argc, char **argv)
     }
   }
   bool ok = worst <= max_allowed && (double)over <= fraction * (double)n;
+  if (max_allowed == 0.0 && pfm(argv[1]) && pfm(argv[2]))
+    ok = ok && differ == 0;
   printf("%s: max %.3f/255, %ld of %ld channels over %.3g/255", ok ? "within" : "OUTSIDE",
          worst, over, n, tol);
   if (pfm(argv[1]) && pfm(argv[2]))

@@ -3,10 +3,12 @@
 # and why"): the course built and tested in fresh Debian trees, cross-built
 # for arm64 and run under qemu-user, built with clang beside gcc. Each
 # platform renders every step's reference scene with the image test's options
-# (tools/figures/images.sh), and each render is compared with images/ at the image
-# test's tolerance and with this machine's gcc render, float for float.
+# (tools/figures/images.sh) and steps 07 and 08 with every sampler, and each
+# render is compared with images/ at the image test's tolerance and with this
+# machine's gcc render, float for float: a float that differs fails.
 #
-# Usage (root, on Debian or Ubuntu, the Debian mirror reachable):
+# Usage (root, on Debian or Ubuntu, the Debian mirror reachable; host alone
+# needs neither, and is make check-compilers):
 #   tools/build/platforms.sh [PLATFORM...]    (make platforms; default: all four)
 #     host      this machine: clang (BUILD/clang), gcc without OpenMP
 #               (BUILD/no-openmp) and gcc -march=native (BUILD/native)
@@ -38,9 +40,12 @@ size() { local wh; wh=$(tools/build/manifest.sh get "$1" IMAGE_SIZE); echo "--wi
 terms() { tools/build/manifest.sh get "$1" IMAGE_TERMS; }
 
 # renders BUILD OUT [RUNNER...]: every step's reference render (and its Phong
-# terms) as OUT/NAME.pfm, and step 04's canonical scene lit by its
-# directional light alone, along (0, -1, -0.5) and along the same times 1e-8
-# (OUT/light-unit.pfm, OUT/light-1e-8.pfm).
+# terms) as OUT/NAME.pfm; steps 07 and 08 at 160x120 with each sampler
+# (OUT/sampler-STEP-NAME.pfm: the samplers draw their points, and step 08 its
+# light samples, from integer hashes that no compiler may reorder); and step
+# 04's canonical scene lit by its directional light alone, along
+# (0, -1, -0.5) and along the same times 1e-8 (OUT/light-unit.pfm,
+# OUT/light-1e-8.pfm).
 renders() {
   local b=$1 out=$2 s term args d tag
   shift 2
@@ -51,6 +56,13 @@ renders() {
       # shellcheck disable=SC2046,SC2086  # options and their values, split on spaces
       "$@" "$b/bin/$s" $(size "$s") --threads 2 --quiet $args ${term:+--aov $term} \
         -o "$out/$s${term:+.$term}.pfm" 2>>"$out/stderr" || { echo "renders: $s failed"; return 1; }
+    done
+  done
+  for s in $STEPS; do
+    case $(tools/build/manifest.sh get "$s" FEATURES) in *SCENE_SAMPLES*) ;; *) continue ;; esac
+    for term in center grid random jitter sobol; do
+      "$@" "$b/bin/$s" --width 160 --height 120 --samples 4 --sampler "$term" --threads 2 --quiet \
+        -o "$out/sampler-$s-$term.pfm" 2>>"$out/stderr" || { echo "renders: $s --sampler $term failed"; return 1; }
     done
   done
   [ -x "$b/bin/04-phong" ] || return 0
@@ -69,7 +81,10 @@ if [ "${1:-}" = renders ]; then
   exit
 fi
 
-[ "$(id -u)" = 0 ] || { echo "platforms: run as root (debootstrap, chroot, apt-get)"; exit 2; }
+for platform in "$@"; do
+  [ "$platform" = host ] || [ "$(id -u)" = 0 ] ||
+    { echo "platforms: $platform: run as root (debootstrap, chroot, apt-get); host alone needs no root"; exit 2; }
+done
 RESULTS=${PLATFORMS_RESULTS:-$BUILD/platforms}
 ROOT=${PLATFORMS_ROOT:-/var/tmp/rt-platforms}
 MIRROR=${MIRROR:-$(grep -rhoE 'https?://deb\.debian\.org/debian/?' /etc/apt/sources.list /etc/apt/sources.list.d 2>/dev/null | head -n 1)}
@@ -79,6 +94,18 @@ mkdir -p "$RESULTS"
 failed=0
 
 say() { echo "$*" | tee -a "$RESULTS/summary.txt"; }
+# verdict RC LINE: a comparison's line, in the summary; printed too when it
+# failed (RC not 0). Counts them.
+compared=0 differed=0
+verdict() {
+  compared=$((compared + 1))
+  if [ "$1" = 0 ]; then
+    echo "$2" >> "$RESULTS/summary.txt"
+  else
+    differed=$((differed + 1)) failed=1
+    say "$2"
+  fi
+}
 # check NAME CMD...: run CMD, its output in the platform's log; one summary line.
 check() {
   local name=$1 t0=$SECONDS
@@ -100,18 +127,20 @@ compare() {
   for f in "$dir"/*.pfm; do
     name=$(basename "$f" .pfm)
     case $name in light-*) continue ;; esac
-    step=${name%%.*}
-    read -r tol frac max < <(tools/build/manifest.sh get "$step" IMAGE_TOL)
-    line=$("$BUILD/bin/pfmdiff" "$f" "images/$name.png" "$tol" "$frac" "${max:-16}") || failed=1
-    say "$platform: $name against images/: $line"
+    if [ "${name#sampler-}" = "$name" ]; then
+      step=${name%%.*}
+      read -r tol frac max < <(tools/build/manifest.sh get "$step" IMAGE_TOL)
+      line=$("$BUILD/bin/pfmdiff" "$f" "images/$name.png" "$tol" "$frac" "${max:-16}")
+      verdict $? "$platform: $name against images/: $line"
+    fi
     if [ "$dir" != "$ref" ] && [ -f "$ref/$name.pfm" ]; then
       line=$("$BUILD/bin/pfmdiff" "$f" "$ref/$name.pfm" 0 0 0)
-      say "$platform: $name against this machine's gcc render: $line"
+      verdict $? "$platform: $name against this machine's gcc render: $line"
     fi
   done
   if [ -f "$dir/light-unit.pfm" ]; then
-    line=$("$BUILD/bin/pfmdiff" "$dir/light-1e-8.pfm" "$dir/light-unit.pfm" 0 0 0) || failed=1
-    say "$platform: directional light (0, -1e-8, -0.5e-8) against (0, -1, -0.5): $line"
+    line=$("$BUILD/bin/pfmdiff" "$dir/light-1e-8.pfm" "$dir/light-unit.pfm" 0 0 0)
+    verdict $? "$platform: directional light (0, -1e-8, -0.5e-8) against (0, -1, -0.5): $line"
   fi
 }
 
@@ -213,4 +242,5 @@ for platform in "$@"; do
   esac
   tree_close
 done
+say "platforms: $compared renders compared, $differed differ (every line: $RESULTS/summary.txt)"
 exit $failed
