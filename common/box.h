@@ -1,8 +1,8 @@
 /* Axis-aligned bounding box (min and max corners) of a shape: what the speed
  * pack's index builds over (fast/index/). Every shape gives one through its
- * name_bounds, declared here from SHAPE_REGISTRY; an unbounded shape (the
- * plane) has infinite corners along the axes it extends in. Not used to
- * render. docs/extending.md, "Adding a shape". */
+ * name_bounds, declared here from SHAPE_REGISTRY (common/shapes.h); an
+ * unbounded shape (the plane) has infinite corners along the axes it extends
+ * in. docs/extending.md, "Adding a shape". */
 #ifndef RT_BOX_H
 #define RT_BOX_H
 

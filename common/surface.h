@@ -1,10 +1,10 @@
 /* A shape's surface described exactly, in long double: the point at
  * parameters (u, v) and its unit normal, computed from the shape's own
  * floats. Each shape's name_surface gives it (declared below from
- * SHAPE_REGISTRY, common/shapes.h); the shape
- * conformance suite (tests/test_shapes.c) aims its rays at these points and
- * takes them as the reference its hits are checked against. Not used to
- * render. docs/extending.md, "The conformance suite". */
+ * SHAPE_REGISTRY, common/shapes.h); the shape conformance suite
+ * (tests/test_shapes.c) aims its rays at these points and takes them as the
+ * reference its hits are checked against. Not used to render.
+ * docs/extending.md, "The conformance suite". */
 #ifndef RT_SURFACE_H
 #define RT_SURFACE_H
 
