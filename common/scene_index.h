@@ -7,8 +7,11 @@
 #define RT_SCENE_INDEX_H
 
 #include "box.h"
-#include "scene.h"
 #include "shapes.h"
+
+/* The scene (scene.h), by pointer only: the table's users include scene.h
+ * themselves, and scene.c, which fills Scene.index, includes this. */
+typedef struct Scene Scene;
 
 /* The scene's two queries as a table of functions, which scene_intersect and
  * scene_occluded call when Scene.index points to one: an index over the

@@ -5,6 +5,7 @@
 #ifndef RT_COUNTING_H
 #define RT_COUNTING_H
 
+#include "scene.h"
 #include "scene_index.h"
 
 /* A query table that counts the queries of a scene (then answers them as

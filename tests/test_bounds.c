@@ -4,6 +4,7 @@
  * unbounded plane's box is infinite. docs/extending.md, "Adding a shape". */
 #include "check.h"
 
+#include "scene.h"
 #include "scene_index.h"
 
 #define DOC "docs/extending.md, \"Adding a shape\""

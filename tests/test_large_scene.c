@@ -15,6 +15,7 @@
 #include "app/parser_state.h"
 #include "reader/sphere_line.h"
 #include "same_instance.h"
+#include "scene.h"
 #include "scene_index.h"
 #include "surface.h"
 

@@ -23,6 +23,7 @@
 
 #include <float.h>
 
+#include "scene.h"
 #include "scene_index.h"
 #include "surface.h"
 

@@ -8,6 +8,7 @@
 #include "app/render.h"
 
 #include "app/render_point.h"
+#include "scene.h"
 #include "scene_index.h"
 #include "threads.h"
 #include <stdio.h>

@@ -7,6 +7,7 @@
 #ifndef RT_ACCEL_H
 #define RT_ACCEL_H
 
+#include "scene.h"
 #include "scene_index.h"
 
 /* Point scene->index at a new index's query table (freeing the one

@@ -8,6 +8,7 @@
 #include <stddef.h>
 #include <string.h>
 
+#include "scene.h"
 #include "scene_index.h" /* Box, scene_instance_bounds, Instance */
 #include "index/cones.h"
 
