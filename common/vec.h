@@ -50,7 +50,8 @@ static inline int vec_is_zero(vec3s v)
 /* v / |v|, the unit vector along v; (0, 0, 0) for v = 0; NaN components for
  * an infinite or NaN v. cglm 0.8.8's formula, v (1 / sqrt(v.v)), on every
  * cglm (0.9 returns 0 for any v shorter than 1.2e-7), a tiny or huge v first
- * scaled by an exact power of two. docs/accuracy.md, "Normalization". */
+ * scaled by an exact power of two. docs/accuracy.md, "What the code does,
+ * and why". */
 static inline vec3s vec_normalize(vec3s v)
 {
   float n2 = glms_vec3_dot(v, v);
