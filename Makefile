@@ -200,7 +200,7 @@ $(BUILD)/obj/common/shade.o: CFLAGS += $(if $(filter 0,$(FAST)),,-include fast/h
 $(BUILD)/obj/common/app/stb_impl.o: CFLAGS += -w
 $(LIBCOMMON): $(COMMON_OBJ)
 	@rm -f $@
-	@ar rcs $@ $^
+	@$(AR) rcs $@ $^
 
 # ---------------------------------------------------------------- steps
 # step_rules(step): binary build/bin/STEP from steps/STEP/*.c, the default

@@ -15,7 +15,7 @@ TARGET=5e-4
 vs_section() {
   if [ -s "$D/vs.txt" ] && [ "$(wc -l < "$D/vs.csv" 2>/dev/null || echo 0)" -gt 1 ]; then
     echo "Steps 04-08's default renders (800x600, 2 threads) by this build and by"
-    echo 'the one in `'"$(cat "$D/vs.txt")"'`, in turn (`BENCH_VS=DIR make bench`): whole-process'
+    echo "the one in $(sed -E 's/^([^ ]*)/`\1`/' "$D/vs.txt"), in turn (\`BENCH_VS=DIR make bench\`): whole-process"
     echo "time (s, medians) and the median, least and largest of the pairs' ratios"
     echo "(this / other; below 1, this build is faster)."
     echo

@@ -132,7 +132,10 @@ if [ -n "${BENCH_VS:-}" ] && [ -x "$BENCH_VS/05-shadows" ]; then
     m() { awk "{print $1}" <<<"$pairs" | stats | cut -d' ' -f1; }
     echo "$s,$RUNS,$(m '$3'),$(m '$6'),$r" >> "$D/vs.csv"
   done
-  echo "$BENCH_VS" > "$D/vs.txt"
+  # Which build: the folder, and the commit it was built from when it is
+  # inside a git work tree.
+  vs_commit=$(git -C "$BENCH_VS" rev-parse --short HEAD 2>/dev/null)
+  echo "$BENCH_VS${vs_commit:+ (commit $vs_commit)}" > "$D/vs.txt"
 else
   log "against another build: BENCH_VS not set (or no programs in it): skipped"
   : > "$D/vs.txt"

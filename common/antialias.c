@@ -3,6 +3,9 @@
 #include "antialias.h"
 
 #include "app/render_point.h"
+#include "film.h"
+#include "sampler.h"
+#include "scene.h"
 #include "shade.h"
 
 /* BEGIN SOLUTION step 07 */

@@ -4,8 +4,10 @@
 #ifndef RT_ANTIALIAS_H
 #define RT_ANTIALIAS_H
 
-#include "film.h"
-#include "scene.h"
+#include "vec.h"
+
+typedef struct Scene Scene; /* scene.h */
+typedef struct Film Film;   /* film.h */
 
 /* The box filter: the colour of pixel (i, j) as the mean over its square.
  * With scene->sampler.adaptive T > 0, from its corners (each shared with the

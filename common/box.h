@@ -1,11 +1,13 @@
 /* Axis-aligned bounding box (min and max corners) of a shape: what the speed
  * pack's index builds over (fast/index/). Every shape gives one through its
- * NAME_bounds; an unbounded shape (the plane) has infinite corners along the
- * axes it extends in. docs/extending.md, "Adding a shape". */
+ * name_bounds, declared here from SHAPE_REGISTRY (common/shapes.h); an
+ * unbounded shape (the plane) has infinite corners along the axes it extends
+ * in. docs/extending.md, "Adding a shape". */
 #ifndef RT_BOX_H
 #define RT_BOX_H
 
 #include <stdbool.h>
+#include "shapes.h"
 #include "vec.h"
 
 typedef struct Box {
@@ -48,5 +50,11 @@ static inline bool box_holds(Box b, vec3s p)
   return p.x >= b.min.x && p.x <= b.max.x && p.y >= b.min.y && p.y <= b.max.y &&
          p.z >= b.min.z && p.z <= b.max.z;
 }
+
+/* Each shape's box, padded by box_margin: sphere_bounds, plane_bounds, ...
+ * (their definitions say how each is drawn). */
+#define BOX_BOUNDS_(NAME, name, Type, STORE, DOC) Box name##_bounds(const Type *shape);
+SHAPE_REGISTRY(BOX_BOUNDS_)
+#undef BOX_BOUNDS_
 
 #endif

@@ -2,7 +2,9 @@
  * from the centre. Given code, as the area lights' quad.c. */
 #include "disc.h"
 
+#include "box.h"
 #include "quad.h" /* flat_hit_fill */
+#include "surface.h"
 
 Disc disc_make(vec3s center, vec3s normal, float radius)
 {
@@ -30,6 +32,8 @@ void disc_hit_fill(const Disc *d, Ray r, float t, Hit *hit)
   flat_hit_fill(d->center, d->normal, r, t, hit);
 }
 
+/* The box of the disc: along axis i it reaches radius * sqrt(1 - n_i^2)
+ * from the centre (n the unit normal), padded by box_margin. */
 Box disc_bounds(const Disc *d)
 {
   /* sqrt(1 - n_x^2) as sqrt(n_y^2 + n_z^2): no cancellation for n near an
@@ -41,6 +45,10 @@ Box disc_bounds(const Disc *d)
   return box_around(d->center, half, pad);
 }
 
+/* For the shape conformance suite: the disc of radius `size` centred at
+ * `at` facing `axis`, and its surface in long double: the point u radius
+ * from the centre at angle 2 pi v in the disc's plane; on the disc for
+ * |u| <= 1, false past it. */
 Disc disc_example(vec3s at, float size, vec3s axis)
 {
   return disc_make(at, axis, size);

@@ -6,8 +6,6 @@
 #ifndef RT_DISC_H
 #define RT_DISC_H
 
-#include "box.h"
-#include "surface.h"
 #include "ray.h"
 
 typedef struct Disc {
@@ -27,16 +25,5 @@ float disc_hit_t(const Disc *d, Ray r, float tmax);
 /* Fill the hit at distance t: p snapped onto the disc's plane, n facing the
  * ray, backface when the ray comes from the side the normal points to not. */
 void disc_hit_fill(const Disc *d, Ray r, float t, Hit *hit);
-
-/* The box of the disc: along axis i it reaches radius * sqrt(1 - n_i^2)
- * from the centre (n the unit normal), padded by box_margin (common/box.h). */
-Box disc_bounds(const Disc *d);
-
-/* For the shape conformance suite (common/shapes.h, tests/test_shapes.c):
- * the disc of radius `size` centred at `at` facing `axis`, and its surface
- * in long double (common/surface.h): the point u radius from the centre at
- * angle 2 pi v in the disc's plane; on the disc for |u| <= 1, false past it. */
-Disc disc_example(vec3s at, float size, vec3s axis);
-bool disc_surface(const Disc *d, long double u, long double v, SurfacePoint *sp);
 
 #endif

@@ -1,6 +1,17 @@
 /* Ray-plane intersection (step 02). docs/02-intersection.md. */
 #include "plane.h"
 
+#include "box.h"
+#include "surface.h"
+
+/* v with component `axis` (0, 1, 2: x, y, z) replaced by `value`, as three
+ * selects: assigning v.raw[axis] would send v through memory, and reading it
+ * back whole then waits on the store (docs/performance.md). */
+static inline vec3s vec_with(vec3s v, int axis, float value)
+{
+  return vec_make(axis == 0 ? value : v.x, axis == 1 ? value : v.y, axis == 2 ? value : v.z);
+}
+
 Plane plane_make(vec3s point, vec3s normal)
 {
   Plane pl = {.point = point, .normal = glms_vec3_normalize(normal), .axis = -1};
@@ -47,6 +58,10 @@ void plane_hit_fill(const Plane *pl, Ray r, float t, Hit *hit)
   /* END SOLUTION */
 }
 
+/* The plane is unbounded: its box is infinite (-INFINITY to INFINITY) along
+ * every axis, except a plane normal to a coordinate axis (axis >= 0), whose
+ * box is flat along that axis at the plane's coordinate, padded by
+ * box_margin. box_is_bounded tells the two apart from a bounded box. */
 Box plane_bounds(const Plane *pl)
 {
   Box b = {vec_make(-INFINITY, -INFINITY, -INFINITY), vec_make(INFINITY, INFINITY, INFINITY)};
@@ -58,6 +73,9 @@ Box plane_bounds(const Plane *pl)
   return b;
 }
 
+/* For the shape conformance suite: the plane through `at` with normal `axis`
+ * (`size` unused), and its surface in long double: point + (u - 1/2) t1 +
+ * (v - 1/2) t2, (t1, t2, normal) orthonormal; on the plane for every (u, v). */
 Plane plane_example(vec3s at, float size, vec3s axis)
 {
   (void)size;

@@ -2,6 +2,9 @@
  * docs/08-area-lights.md. */
 #include "quad.h"
 
+#include "box.h"
+#include "surface.h"
+
 Quad quad_make(vec3s corner, vec3s edge1, vec3s edge2)
 {
   vec3s cross = glms_vec3_cross(edge1, edge2);
@@ -49,6 +52,7 @@ vec3s quad_point(const Quad *q, float a, float b)
                                                 glms_vec3_scale(q->edge2, b)));
 }
 
+/* The box of the four corners, padded by box_margin. */
 Box quad_bounds(const Quad *q)
 {
   vec3s c[4] = {q->corner, glms_vec3_add(q->corner, q->edge1), glms_vec3_add(q->corner, q->edge2),
@@ -57,10 +61,15 @@ Box quad_bounds(const Quad *q)
   for (int k = 1; k < 4; k++)
     b = box_union(b, (Box){c[k], c[k]});
   float size = vec_max_abs(q->edge1) + vec_max_abs(q->edge2);
-  float pad = box_margin(size, vec_fmax(vec_max_abs(b.min), vec_max_abs(b.max)));
+  float pad = box_margin(size, fmaxf(vec_max_abs(b.min), vec_max_abs(b.max)));
   return (Box){glms_vec3_subs(b.min, pad), glms_vec3_adds(b.max, pad)};
 }
 
+/* For the shape conformance suite: a parallelogram centred at `at` facing
+ * `axis`, edges of length `size` and 0.75 size at 80 degrees, and its
+ * surface in long double: corner + u edge1 + v edge2, its normal that of
+ * edge1 x edge2 computed there; on the quad for (u, v) in [0, 1]^2, false
+ * outside. */
 Quad quad_example(vec3s at, float size, vec3s axis)
 {
   vec3s t1, t2;

@@ -4,8 +4,6 @@
 #ifndef RT_QUAD_H
 #define RT_QUAD_H
 
-#include "box.h"
-#include "surface.h"
 #include "ray.h"
 
 typedef struct Quad {
@@ -29,17 +27,6 @@ void quad_hit_fill(const Quad *q, Ray r, float t, Hit *hit);
  * whose plane passes through `point` with unit `normal`: the point projected
  * back onto the plane, n facing the ray, backface = behind the front. */
 void flat_hit_fill(vec3s point, vec3s normal, Ray r, float t, Hit *hit);
-
-/* The box of the four corners, padded by box_margin (common/box.h). */
-Box quad_bounds(const Quad *q);
-
-/* For the shape conformance suite (common/shapes.h, tests/test_shapes.c):
- * a parallelogram centred at `at` facing `axis`, edges of length `size` and
- * 0.75 size at 80 degrees, and its surface in long double (common/surface.h):
- * corner + u edge1 + v edge2, its normal that of edge1 x edge2 computed
- * there; on the quad for (u, v) in [0, 1]^2, false outside. */
-Quad quad_example(vec3s at, float size, vec3s axis);
-bool quad_surface(const Quad *q, long double u, long double v, SurfacePoint *sp);
 
 /* The point at parameters (a, b) in [0,1]^2. */
 vec3s quad_point(const Quad *q, float a, float b);

@@ -1,6 +1,7 @@
 /* Scene: instances, lights, materials and the ray queries (step 02 on).
  * docs/02-intersection.md, docs/05-shadows.md. */
 #include "scene.h"
+#include "scene_index.h"
 
 #include <stdio.h>
 #include <stdlib.h>

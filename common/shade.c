@@ -4,7 +4,11 @@
 #include "shade.h"
 
 #include <string.h>
+#include "film.h"
 #include "rng.h"
+#include "sampler.h"
+#include "scene.h"
+#include "shapes.h"
 
 vec3s shade_phong_light(const Material *m, const Hit *hit, vec3s v, vec3s li, vec3s l)
 {

@@ -7,8 +7,12 @@
 #ifndef RT_SHADE_H
 #define RT_SHADE_H
 
-#include "film.h"
-#include "scene.h"
+#include "light.h"
+#include "material.h"
+#include "ray.h"
+
+typedef struct Scene Scene; /* scene.h */
+typedef struct Film Film;   /* film.h */
 
 /* Phong's term for one light (step 04): what the hit point, of material m,
  * sends toward the unit direction v (toward the eye) for radiance li

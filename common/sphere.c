@@ -2,6 +2,9 @@
  * Tracing Gems, ch. 7. docs/02-intersection.md, docs/accuracy.md. */
 #include "sphere.h"
 
+#include "box.h"
+#include "surface.h"
+
 float sphere_hit_t(const Sphere *s, Ray r, float tmax)
 {
   /* BEGIN SOLUTION step 02 */
@@ -78,12 +81,17 @@ void sphere_hit_fill(const Sphere *s, Ray r, float t, Hit *hit)
   /* END SOLUTION */
 }
 
+/* The cube around the sphere, padded by box_margin. */
 Box sphere_bounds(const Sphere *s)
 {
   float r = s->radius, pad = box_margin(r, vec_max_abs(s->center) + r);
   return box_around(s->center, vec_make(r, r, r), pad);
 }
 
+/* For the shape conformance suite: the sphere of radius `size` centred at
+ * `at` (`axis` unused), and its surface in long double: the point at polar
+ * angle pi v from +z and azimuth 2 pi u, its outward normal; on the sphere
+ * for every (u, v). */
 Sphere sphere_example(vec3s at, float size, vec3s axis)
 {
   (void)axis;

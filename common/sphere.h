@@ -3,8 +3,6 @@
 #ifndef RT_SPHERE_H
 #define RT_SPHERE_H
 
-#include "box.h"
-#include "surface.h"
 #include "ray.h"
 
 typedef struct Sphere {
@@ -19,17 +17,5 @@ float sphere_hit_t(const Sphere *s, Ray r, float tmax);
 /* Fill p (refined onto the sphere), n (facing against the ray), backface and
  * p_err for the hit at distance t found by sphere_hit_t. */
 void sphere_hit_fill(const Sphere *s, Ray r, float t, Hit *hit);
-
-/* The cube around the sphere, padded by box_margin (common/box.h). Given
- * code, for the speed pack's index. */
-Box sphere_bounds(const Sphere *s);
-
-/* For the shape conformance suite (common/shapes.h, tests/test_shapes.c):
- * the sphere of radius `size` centred at `at` (`axis` unused), and its
- * surface in long double (common/surface.h): the point at polar angle
- * pi v from +z and azimuth 2 pi u, its outward normal; on the sphere for
- * every (u, v). */
-Sphere sphere_example(vec3s at, float size, vec3s axis);
-bool sphere_surface(const Sphere *s, long double u, long double v, SurfacePoint *sp);
 
 #endif

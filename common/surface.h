@@ -1,15 +1,17 @@
 /* A shape's surface described exactly, in long double: the point at
  * parameters (u, v) and its unit normal, computed from the shape's own
- * floats. Each shape's name_surface gives it (common/shapes.h); the shape
- * conformance suite (tests/test_shapes.c) aims its rays at these points and
- * takes them as the reference its hits are checked against. Not used to
- * render. docs/extending.md, "The conformance suite". */
+ * floats. Each shape's name_surface gives it (declared below from
+ * SHAPE_REGISTRY, common/shapes.h); the shape conformance suite
+ * (tests/test_shapes.c) aims its rays at these points and takes them as the
+ * reference its hits are checked against. Not used to render.
+ * docs/extending.md, "The conformance suite". */
 #ifndef RT_SURFACE_H
 #define RT_SURFACE_H
 
 #include <math.h>
 #include <stdbool.h>
 
+#include "shapes.h"
 #include "vec.h"
 
 typedef struct SurfacePoint {
@@ -72,5 +74,15 @@ static inline void surface_frame(vec3s axis, vec3s *t1, vec3s *t2)
   *t1 = vec_make((float)a[0], (float)a[1], (float)a[2]);
   *t2 = vec_make((float)b[0], (float)b[1], (float)b[2]);
 }
+
+/* For each shape of the registry, its example and its surface: a shape of
+ * that size around `at` facing `axis` (sphere_example, ...), and the point
+ * and unit normal at parameters (u, v), false for (u, v) past an edge
+ * (sphere_surface, ...). The definitions say what each draws. */
+#define SURFACE_OF_(NAME, name, Type, STORE, DOC)                                    \
+  Type name##_example(vec3s at, float size, vec3s axis);                             \
+  bool name##_surface(const Type *shape, long double u, long double v, SurfacePoint *sp);
+SHAPE_REGISTRY(SURFACE_OF_)
+#undef SURFACE_OF_
 
 #endif

@@ -20,26 +20,13 @@ static inline vec3s vec_reflect(vec3s in, vec3s n)
   return glms_vec3_sub(in, glms_vec3_scale(n, 2.0f * glms_vec3_dot(in, n)));
 }
 
-/* v with component `axis` (0, 1, 2: x, y, z) replaced by `value`. Written
- * as three selects: assigning v.raw[axis] would send v through memory, and
- * reading it back whole then waits on the store (about 5 % of step 05's
- * frame, docs/performance.md). */
-static inline vec3s vec_with(vec3s v, int axis, float value)
-{
-  return vec_make(axis == 0 ? value : v.x, axis == 1 ? value : v.y, axis == 2 ? value : v.z);
-}
-
-/* fmaxf(a, b) (a NaN loses to a number) without the call to libm that gcc
- * makes for fmaxf: two compares and a select. */
-static inline float vec_fmax(float a, float b)
-{
-  return a > b || b != b ? a : b;
-}
-
-/* Largest absolute component, |v|_inf. */
+/* Largest absolute component, |v|_inf: a NaN component loses to a number, as
+ * in fmaxf, by compares and selects (gcc calls libm for fmaxf). */
 static inline float vec_max_abs(vec3s v)
 {
-  return vec_fmax(fabsf(v.x), vec_fmax(fabsf(v.y), fabsf(v.z)));
+  float x = fabsf(v.x), y = fabsf(v.y), z = fabsf(v.z);
+  float yz = y > z || z != z ? y : z;
+  return x > yz || yz != yz ? x : yz;
 }
 
 /* Sum of absolute components, |v|_1. */
@@ -61,13 +48,10 @@ static inline int vec_is_zero(vec3s v)
 }
 
 /* v / |v|, the unit vector along v; (0, 0, 0) for v = 0; NaN components for
- * an infinite or NaN v. cglm's normalize cannot be relied on here: since
- * cglm 0.9 it returns (0, 0, 0) for any v shorter than FLT_EPSILON (1.2e-7),
- * and the scene format accepts directions of length 1e-18. Computed as
- * v * (1 / sqrt(v.v)), cglm 0.8.8's formula bit for bit, when v.v is in
- * [2^-100, 2^100]; any other v is first multiplied by the power of two
- * (exact) that brings its largest component into [0.5, 1), so a tiny or huge
- * vector comes out as accurate as one of length 1. docs/accuracy.md. */
+ * an infinite or NaN v. cglm 0.8.8's formula, v (1 / sqrt(v.v)), on every
+ * cglm (0.9 returns 0 for any v shorter than 1.2e-7), a tiny or huge v first
+ * scaled by an exact power of two. docs/accuracy.md, "What the code does,
+ * and why". */
 static inline vec3s vec_normalize(vec3s v)
 {
   float n2 = glms_vec3_dot(v, v);
@@ -86,13 +70,9 @@ static inline vec3s vec_normalize(vec3s v)
 }
 
 /* m (v, w): the 4x4 matrix m times the point (w = 1) or direction (w = 0) v,
- * its first three rows. Each component is summed in one order,
- * ((m3 w + m2 z) + m1 y) + m0 x, every product and sum rounded: cglm's
- * mat4_mulv is SIMD, with a fused multiply-add where the compiler targets FMA
- * (-march=native on most x86-64 CPUs) and another order on arm64 (NEON), so
- * the same camera gave rays differing in their last bits from machine to
- * machine. The order is that of cglm's SSE2 code without FMA (the portable
- * x86-64 build): its pictures are unchanged. docs/accuracy.md. */
+ * its first three rows, each summed in one fixed order with every product
+ * rounded, so that camera rays come out alike on every CPU, compiler and
+ * cglm (cglm's SIMD order differs). docs/accuracy.md. */
 static inline vec3s vec_mat4_mulv3(mat4s m, vec3s v, float w)
 {
   vec3s r;

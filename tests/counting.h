@@ -6,6 +6,7 @@
 #define RT_COUNTING_H
 
 #include "scene.h"
+#include "scene_index.h"
 
 /* A query table that counts the queries of a scene (then answers them as
  * that scene does): how many shadow rays the shading functions trace. */

@@ -6,7 +6,9 @@
 
 #include "check.h"
 #include "counting.h"
+#include "scene.h"
 #include "shade.h"
+#include "shapes.h"
 
 #define DOC "docs/05-shadows.md, \"What you write\""
 #define SPAWN_DOC "docs/05-shadows.md, \"Self-intersection: where the shadow ray starts\""

@@ -8,6 +8,7 @@
 
 #include "app/image.h"
 #include "app/parser.h"
+#include "shapes.h"
 #include "stress.h"
 
 #define STEP05 BUILD_DIR "/bin/05-shadows"

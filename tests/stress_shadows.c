@@ -10,6 +10,7 @@
 
 #include "app/image.h"
 #include "app/parser.h"
+#include "shapes.h"
 #include "stress.h"
 
 #define W 160

@@ -4,7 +4,9 @@
 #include "check.h"
 
 #include "app/parser.h"
+#include "scene.h"
 #include "shade.h"
+#include "shapes.h"
 
 #define DOC "docs/06-ambient.md, \"What you write\""
 #define RELIES "shade_phong_light (step 04), shade_visible (step 05), sphere_hit_t, " \

@@ -5,6 +5,7 @@
 #include "check.h"
 
 #include "scene.h"
+#include "scene_index.h"
 
 #define DOC "docs/extending.md, \"Adding a shape\""
 

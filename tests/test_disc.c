@@ -11,6 +11,7 @@
 #include "app/parser.h"
 #include "disc.h"
 #include "scene.h"
+#include "scene_index.h"
 
 #define DOC "docs/scene-format.md, \"Statements\""
 

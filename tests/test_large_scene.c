@@ -15,6 +15,9 @@
 #include "app/parser_state.h"
 #include "reader/sphere_line.h"
 #include "same_instance.h"
+#include "scene.h"
+#include "scene_index.h"
+#include "surface.h"
 
 #define DOC "docs/extending.md, \"Adding a shape\""
 

@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "app/parser.h"
+#include "shapes.h"
 
 #define DOC "docs/scene-format.md, \"Statements\""
 #define DOC_ERR "docs/scene-format.md, \"Errors\""

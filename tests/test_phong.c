@@ -3,7 +3,9 @@
  * origin with normal +y, in a scene with nothing that could cast a shadow.
  * docs/04-phong.md, "What you write". */
 #include "check.h"
+#include "scene.h"
 #include "shade.h"
+#include "shapes.h"
 
 #define DOC "docs/04-phong.md, \"What you write\""
 

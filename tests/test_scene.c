@@ -4,6 +4,7 @@
 #include "check.h"
 
 #include "scene.h"
+#include "shapes.h"
 
 /* scene_intersect and scene_occluded are given code: they call the shapes'
  * functions, so a failure here is a failure of those. */

@@ -24,6 +24,8 @@
 #include <float.h>
 
 #include "scene.h"
+#include "scene_index.h"
+#include "surface.h"
 
 /* ---------------------------------------------------------------- the kinds */
 

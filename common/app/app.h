@@ -4,8 +4,10 @@
 #ifndef RT_APP_H
 #define RT_APP_H
 
-#include "film.h"
-#include "scene.h"
+#include "vec.h"
+
+typedef struct Scene Scene; /* scene.h */
+typedef struct Film Film;   /* film.h */
 
 typedef struct Step {
   const char *name;      /* "04-phong" */

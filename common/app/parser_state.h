@@ -8,6 +8,7 @@
 #include "app/lexer.h"
 #include "app/names.h"
 #include "scene.h"
+#include "shapes.h"
 
 /* Statements that may appear once per file. */
 enum { ONCE_FILM, ONCE_CAMERA, ONCE_AMBIENT, ONCE_BACKGROUND, ONCE_SAMPLES,

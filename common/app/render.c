@@ -8,6 +8,8 @@
 #include "app/render.h"
 
 #include "app/render_point.h"
+#include "scene.h"
+#include "scene_index.h"
 #include "threads.h"
 #include <stdio.h>
 #include <stdlib.h>

@@ -13,6 +13,8 @@
 #include "app/render.h"
 #include "app/trace_line.h"
 #include "film.h"
+#include "scene.h"
+#include "scene_index.h"
 
 /* The Phong terms, in --aov's order (app/aov.h). */
 typedef enum TraceTerm { TERM_AMBIENT, TERM_DIFFUSE, TERM_SPECULAR, TERM_COUNT } TraceTerm;

@@ -8,6 +8,7 @@
 #define RT_ACCEL_H
 
 #include "scene.h"
+#include "scene_index.h"
 
 /* Point scene->index at a new index's query table (freeing the one
  * accel_build made before, if any). The environment variable RT_ACCEL

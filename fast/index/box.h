@@ -8,7 +8,8 @@
 #include <stddef.h>
 #include <string.h>
 
-#include "box.h"
+#include "scene.h"
+#include "scene_index.h" /* Box, scene_instance_bounds, Instance */
 #include "index/cones.h"
 
 /* One node, 32 bytes. Inner node: children nodes[index] and nodes[index + 1],

@@ -12,6 +12,7 @@
 #include <stdint.h>
 
 #include "scene.h"
+#include "scene_index.h"
 
 typedef struct Cones Cones;
 

@@ -2,6 +2,7 @@
  * bottom left, green top left, blue bottom right, white top right. It checks
  * the film's row order (j from the bottom) and the export. docs/01-film.md. */
 #include "app/app.h"
+#include "film.h"
 
 static vec3s pixel(const Scene *scene, const Film *film, int i, int j)
 {

@@ -2,6 +2,8 @@
  * through a fixed camera. Left half: the normal n as colour 0.5 (n + 1).
  * Right half: the depth t as grey 1 - t / 20 (black from 20 units on). docs/02-intersection.md. */
 #include "app/app.h"
+#include "film.h"
+#include "scene.h"
 
 /* The fixed camera of this step: at (0, 1.5, 8), looking along -z, 40 degrees
  * vertical field of view. Step 03 replaces it with the scene's camera. */

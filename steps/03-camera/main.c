@@ -1,6 +1,9 @@
 /* Step 03, the pinhole camera: the scene seen through the lookAt camera of
  * the scene file, each object in its flat diffuse colour. docs/03-camera.md. */
 #include "app/app.h"
+#include "film.h"
+#include "scene.h"
+#include "shapes.h" /* Instance, hit.inst */
 
 static vec3s pixel(const Scene *scene, const Film *film, int i, int j)
 {

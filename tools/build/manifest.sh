@@ -88,6 +88,8 @@ header() {
 #ifndef STEP_MANIFEST_H
 #define STEP_MANIFEST_H
 
+#include "scene.h" /* the SceneFeature bits of .features */
+
 /* The Step fields of main.c: .name, .summary, .features, .sampler, .adaptive. */
 #define STEP_MANIFEST \\
   .name = "$s", \\

@@ -204,7 +204,7 @@ arm64() {
   check "the arm64 cross tools and libraries" in_tree "dpkg --add-architecture arm64 &&
     apt-get update -qq && apt-get install -y -qq --no-install-recommends $pkgs" || return
   check "make build, cross-compiled" in_tree "PKG_CONFIG_LIBDIR=/usr/lib/aarch64-linux-gnu/pkgconfig:/usr/share/pkgconfig \
-    make BUILD=build/arm64 CC=aarch64-linux-gnu-gcc ${ARM64_MAKE_ARGS:-} build &&
+    make BUILD=build/arm64 CC=aarch64-linux-gnu-gcc AR=aarch64-linux-gnu-ar ${ARM64_MAKE_ARGS:-} build &&
     aarch64-linux-gnu-readelf -h build/arm64/bin/04-phong | grep Machine" || return
   check "renders under qemu-aarch64" in_tree "tools/build/platforms.sh renders build/arm64 build/platform-renders-arm64 qemu-aarch64" || return
   rm -rf "${RESULTS:?}/$platform"

@@ -9,6 +9,7 @@
 #include "app/app.h"
 #include "app/image.h"
 #include "sampler.h"
+#include "scene.h"
 #include "shade.h"
 
 #include <stdio.h>

@@ -5,6 +5,9 @@
  * Usage: build/bin/mistakes VARIANT [the steps' options], VARIANT one of
  * lecture, closest, no-offset, epsilon=E, no-tmax, light-shadows. */
 #include "app/app.h"
+#include "film.h"
+#include "scene.h"
+#include "shapes.h"
 
 #include <stdio.h>
 #include <stdlib.h>
