@@ -61,6 +61,15 @@ ours_n() {
   local out; out=$(for _ in $(seq "$n"); do ours "$@"; done)
   echo "$(cut -d' ' -f1 <<<"$out" | stats) $(cut -d' ' -f3 <<<"$out" | stats) $(head -n1 <<<"$out" | cut -d' ' -f2)"
 }
+# in_turn OTHER STEP ARGS...: $RUNS pairs, this build's run of STEP then the
+# one in OTHER (another bin/ folder), a line each: "trace mrays wall" twice.
+in_turn() {
+  local other=$1; shift
+  for _ in $(seq "$RUNS"); do echo "$(ours "$@") $(BIN=$other ours "$@")"; done
+}
+# pair_median PAIRS EXPR: the median of the awk expression EXPR ($3, $6 / $3)
+# over the lines of PAIRS.
+pair_median() { awk "{print $2}" <<<"$1" | stats | cut -d' ' -f1; }
 # pov ARGS...: one POV-Ray run (PNG out) -> "trace_s wall_s".
 pov() {
   local t0=$EPOCHREALTIME tr
@@ -124,13 +133,9 @@ if [ -n "${BENCH_VS:-}" ] && [ -x "$BENCH_VS/05-shadows" ]; then
   log "against $BENCH_VS: steps 04-08, this build and that one in turn ($RUNS pairs)"
   for s in 04-phong 05-shadows 06-ambient 07-antialiasing 08-area-lights; do
     { have "$s" && [ -x "$BENCH_VS/$s" ]; } || continue
-    pairs=$(for _ in $(seq "$RUNS"); do
-      a=$(ours "$s" --threads 2 -o "$B/vs.png"); b=$(BIN=$BENCH_VS ours "$s" --threads 2 -o "$B/vs.png")
-      echo "$a $b"
-    done)
+    pairs=$(in_turn "$BENCH_VS" "$s" --threads 2 -o "$B/vs.png")
     r=$(awk '{print $3 / $6}' <<<"$pairs" | stats | tr ' ' ,)
-    m() { awk "{print $1}" <<<"$pairs" | stats | cut -d' ' -f1; }
-    echo "$s,$RUNS,$(m '$3'),$(m '$6'),$r" >> "$D/vs.csv"
+    echo "$s,$RUNS,$(pair_median "$pairs" '$3'),$(pair_median "$pairs" '$6'),$r" >> "$D/vs.csv"
   done
   # Which build: the folder, and the commit it was built from when it is
   # inside a git work tree.
@@ -153,11 +158,9 @@ if { [ -n "$PREBUILT" ] && [ -x "$NF/bin/05-shadows" ]; } ||
    make --no-print-directory BUILD=$NF FAST=0 $steps_nf >"$B/nofast.log" 2>&1; then
   log "speed pack off: every step's default render, FAST=1 and FAST=0 in turn ($RUNS pairs)"
   for s in $PRESENT_STEPS; do
-    pairs=$(for _ in $(seq "$RUNS"); do
-      a=$(ours "$s" -o "$B/pk.png"); b=$(BIN=$NF/bin ours "$s" -o "$B/pk.png"); echo "$a $b"
-    done)
-    m() { awk "{print $1}" <<<"$pairs" | stats | cut -d' ' -f1; }
-    echo "$s,$RUNS,$(m '$3'),$(m '$6'),$(m '$6 / $3')" >> "$D/pack-off.csv"
+    pairs=$(in_turn "$NF/bin" "$s" -o "$B/pk.png")
+    echo "$s,$RUNS,$(pair_median "$pairs" '$3'),$(pair_median "$pairs" '$6'),$(pair_median "$pairs" '$6 / $3')" \
+      >> "$D/pack-off.csv"
   done
 else
   log "speed pack off: the FAST=0 build failed ($B/nofast.log)"
