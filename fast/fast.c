@@ -1,13 +1,14 @@
 /* The speed pack behind common/app/pack.h, linked by default (FAST=1):
  * the film in huge pages (memory/), the scene's index and its shadow
- * culling toward area lights (index/), the large scene's sphere lines
- * (reader/), PNG in parallel bands (png/). */
+ * culling toward area lights (index/), the large scene's sphere lines and
+ * its parts parsed at once (reader/), PNG in parallel bands (png/). */
 #include "app/pack.h"
 
 #include "index/accel.h"
 #include "memory/huge.h"
 #include "png/bands.h"
 #include "reader/mapped.h"
+#include "reader/parts.h"
 #include "reader/sphere_line.h"
 
 bool pack_film_init(Film *film, int width, int height)
@@ -32,6 +33,11 @@ void pack_index_free(Scene *scene)
 bool pack_sphere_line(const char *text, const char *end, PackSphereLine *out)
 {
   return sphere_line_read(text, end, out);
+}
+
+bool pack_parse(const char *file, const char *text, size_t len, Scene *scene)
+{
+  return parts_parse(file, text, len, scene);
 }
 
 bool pack_map(int fd, size_t size, char **text)

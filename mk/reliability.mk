@@ -6,7 +6,7 @@
 REL_STEP := 08-area-lights
 REL_SRC  := tests/test_bad_input.c tests/test_huge_input.c tests/test_number.c \
             tests/test_outfile.c tests/test_fast_reader.c tests/test_large_scene.c \
-            tests/test_fuzz_corpus.c tests/fuzz/targets.c
+            tests/test_scene_parts.c tests/test_fuzz_corpus.c tests/fuzz/targets.c
 REL_OBJ  := $(REL_SRC:tests/%.c=$(BUILD)/obj/tests/rel/%.o) \
             $(BUILD)/obj/tests/rel/step08-main.o
 

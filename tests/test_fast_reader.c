@@ -16,31 +16,6 @@
 #include "reader/sphere_line.h"
 #include "same_instance.h"
 
-static bool same_instances(const Instance *a, const Instance *b, int n)
-{
-  for (int k = 0; k < n; k++)
-    if (!same_instance(&a[k], &b[k]))
-      return false;
-  return true;
-}
-
-/* A scene's contents as bytes, for comparing two parses. */
-static bool same_scene(const Scene *a, const Scene *b)
-{
-  return a->width == b->width && a->height == b->height && a->samples == b->samples &&
-         a->light_samples == b->light_samples &&
-         memcmp(&a->camera, &b->camera, sizeof a->camera) == 0 &&
-         memcmp(&a->ambient, &b->ambient, sizeof a->ambient) == 0 &&
-         memcmp(&a->background, &b->background, sizeof a->background) == 0 &&
-         a->n_materials == b->n_materials && a->n_lights == b->n_lights &&
-         a->n_instances == b->n_instances && a->n_shapes == b->n_shapes &&
-         (a->n_materials == 0 || memcmp(a->materials, b->materials,
-                                        sizeof *a->materials * (size_t)a->n_materials) == 0) &&
-         (a->n_lights == 0 || memcmp(a->lights, b->lights,
-                                     sizeof *a->lights * (size_t)a->n_lights) == 0) &&
-         same_instances(a->instances, b->instances, a->n_instances);
-}
-
 /* Two parses agree: both fail with the same message, or both build the same
  * scene (and print nothing different). */
 static bool same_parse(bool ok_a, const char *err_a, const Scene *a, bool ok_b,

@@ -44,6 +44,13 @@ typedef struct PackSphereLine {
  * own. */
 bool pack_sphere_line(const char *text, const char *end, PackSphereLine *out);
 
+/* Parse the `len` bytes of `text` into `scene` as parser_load_text does
+ * (app/parser.h), in parts at once (parser_part_parse, parser_parts_join):
+ * true, `scene` holds the scene the one-pass parse makes; false when left
+ * to the one-pass parse (a small text, one thread, an error in the text:
+ * that parse says what is wrong), nothing printed and `scene` as it was. */
+bool pack_parse(const char *file, const char *text, size_t len, Scene *scene);
+
 /* Map the `size` bytes of the regular file open at fd read-only: true, the
  * text at *text (nothing after its last byte); false to read it instead.
  * pack_unmap gives a mapped text back. */

@@ -1,5 +1,7 @@
 /* Whole scene texts (step 02): a file read whole, then parsed statement by
- * statement (common/app/parser_state.c). docs/scene-format.md. */
+ * statement (common/app/parser_state.c), or, when the speed pack takes a
+ * large text, in parts at once (pack_parse, common/app/parser_part.c).
+ * docs/scene-format.md. */
 #include "app/parser.h"
 #include "app/parser_state.h"
 
@@ -7,6 +9,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "app/pack.h"
 #include "app/textfile.h"
 
 bool parser_load_whole(const char *file, const char *text, size_t len, Scene *scene)
@@ -29,7 +32,7 @@ bool parser_load_text(const char *file, const char *text, size_t len, Scene *sce
     scene_free(scene);
     return false;
   }
-  return parser_load_whole(file, text, len, scene);
+  return pack_parse(file, text, len, scene) || parser_load_whole(file, text, len, scene);
 }
 
 bool parser_load_string(const char *file, const char *text, Scene *scene)

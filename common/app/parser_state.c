@@ -185,7 +185,13 @@ bool parser_place_shape(Parser *p, Instance *inst, const Token *name)
     if (!parser_pending_add(p, s->n_instances, p->lx.line, name->col, name->s, name->len))
       return false;
   }
-  return scene_add_instance(s, inst);
+  if (p->room == 0)
+    return scene_add_instance(s, inst);
+  if (s->n_instances == p->room)
+    return false;
+  s->instances[s->n_instances++] = *inst;
+  s->n_shapes = s->n_instances;
+  return true;
 }
 
 /* place_shape, the material looked up by its name. */

@@ -35,6 +35,9 @@ typedef struct Parser {
   int n_forward;
   Names forward_names;  /* name -> index into forward */
   int once_line[ONCE_COUNT]; /* where each once-statement was, 0: not yet */
+  int room; /* 0: shapes go to the scene's growing array; > 0: a part of a
+             * text (parser_part_parse), whose shapes go in place to
+             * scene->instances[0 .. room), an array it does not own */
 } Parser;
 
 /* The scene's materials as records of the names table. */
@@ -55,7 +58,7 @@ bool parser_pending_add(Parser *p, int instance, int line, int col, const char *
 
 /* Add a lit instance whose material, the name token `name`, is
  * inst->material (-1: not defined yet, resolved at the end); false when out
- * of memory. */
+ * of memory, or (silently) when a part finds more shapes than its room. */
 bool parser_place_shape(Parser *p, Instance *inst, const Token *name);
 
 /* The statement table (parser_state.c's STATEMENTS), in the order messages

@@ -1,4 +1,4 @@
-/* Large zeroed blocks in 2 MB pages (memory/huge.h). */
+/* Large blocks in 2 MB pages (memory/huge.h). */
 #define _DEFAULT_SOURCE /* madvise */
 #include "memory/huge.h"
 
@@ -8,7 +8,7 @@
 
 enum { HUGE_PAGE = 2 << 20 };
 
-void *huge_zeroed(size_t bytes)
+void *huge_alloc(size_t bytes)
 {
   if (bytes < HUGE_PAGE)
     return NULL;
@@ -19,6 +19,13 @@ void *huge_zeroed(size_t bytes)
 #ifdef MADV_HUGEPAGE
   madvise(p, rounded, MADV_HUGEPAGE); /* a hint: failure changes nothing */
 #endif
-  memset(p, 0, bytes);
+  return p;
+}
+
+void *huge_zeroed(size_t bytes)
+{
+  void *p = huge_alloc(bytes);
+  if (p)
+    memset(p, 0, bytes);
   return p;
 }
