@@ -3,7 +3,7 @@
  * value by value, or a failure exactly where the one-pass parse fails; and
  * the speed pack's reader (fast/reader/parts.c, pack_parse) on large texts:
  * the same scene, or the one-pass parse's message, whichever piece an error
- * falls in. docs/performance.md, "Large scenes". */
+ * falls in. docs/performance.md, "A large scene text in parts". */
 #include "parse_capture.h"
 #include "check.h"
 
@@ -16,7 +16,7 @@
 #include "same_instance.h"
 #include "scene.h"
 
-#define DOC "docs/performance.md, \"Large scenes\""
+#define DOC "docs/performance.md, \"A large scene text in parts\""
 
 /* A scene whose lines a cut may part: materials used before and after
  * their definition, every once-statement, lights of each kind, every shape,
