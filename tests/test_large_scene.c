@@ -1,7 +1,8 @@
 /* A scene text over 4 MB that uses every statement and every light type,
  * read as the program reads it (parser_load_text: with the speed pack, its
- * sphere lines read straight from the text) and by the general path alone
- * (sphere_line_on off): both must give the same scene, and hold every line
+ * sphere lines read straight from the text and, on two threads or more, the
+ * text parsed in parts at once) and by the general path (sphere_line_on
+ * off): both must give the same scene, and hold every line
  * the test wrote. Its lines are the examples of the parser's statement table
  * (parser_statement_example) and one of each light type (taken from the
  * parser's own message: a light type added to the parser and not to this

@@ -104,13 +104,24 @@ bool parts_load(const char *file, const char *text, size_t len, Scene *scene, in
     return false;
   if (h)
     part[0] = parser_part_parse(file, text, 0, start[1], NULL, shapes, first[1]);
-  bool ok = !h || part[0];
-#pragma omp parallel for schedule(dynamic, 1) if (ok)
-  for (int k = h; k < n; k++)
+  /* A piece that fails (an error: the one-pass parse will say which) stops
+   * the pieces not started yet. */
+  int failed = h && !part[0];
+#pragma omp parallel for schedule(dynamic, 1)
+  for (int k = h; k < n; k++) {
+    int stop;
+#pragma omp atomic read
+    stop = failed;
+    if (stop)
+      continue;
     part[k] = parser_part_parse(file, text, start[k], start[k + 1], h ? part[0] : NULL,
                                 shapes + first[k], first[k + 1] - first[k]);
-  for (int k = 0; k < n; k++)
-    ok = ok && part[k];
+    if (!part[k]) {
+#pragma omp atomic write
+      failed = 1;
+    }
+  }
+  bool ok = !failed;
   ok = ok && parser_parts_join(part, n, shapes, scene);
   for (int k = 0; k < n; k++)
     parser_part_free(part[k]);
