@@ -49,14 +49,21 @@ typedef struct ParserPart ParserPart;
 ParserPart *parser_part_parse(const char *file, const char *text, size_t from, size_t to,
                               const ParserPart *given, struct Instance *room, int n_room);
 
+/* The shapes a part holds: room[0 .. that) of the room it was given. */
+int parser_part_shapes(const ParserPart *part);
+
 /* Free a part (not its room); harmless with NULL. */
 void parser_part_free(ParserPart *part);
 
 /* Join parts[0 .. n) (each parsed, none NULL) into `scene` (freshly
  * scene_init'ed): parts[0] from the text's start, each next one from where
- * the last ended, each given parts[0] or nothing, their rooms consecutive
- * stretches of `instances`: an array from malloc or aligned_alloc with room
- * for grow_capacity(their total room) (common/grow.h). True: `scene` holds
+ * the last ended, each given parts[0] or nothing, their rooms in file order
+ * in `instances`, none starting before the end of the shapes of the parts
+ * before it (consecutive stretches are such; each part's shapes are moved
+ * down to follow the last part's, and nothing moves where the rooms were
+ * full). `instances`: an array from malloc or aligned_alloc with room for
+ * grow_capacity(N) (common/grow.h), N at least the end of the last room.
+ * True: `scene` holds
  * the scene parser_load_whole makes of the whole text (instances in file
  * order, every value the same) and owns `instances`. False when the whole
  * text holds an error that no part alone shows (a material defined in two

@@ -44,6 +44,11 @@ ParserPart *parser_part_parse(const char *file, const char *text, size_t from, s
   return NULL;
 }
 
+int parser_part_shapes(const ParserPart *part)
+{
+  return part->scene.n_instances;
+}
+
 void parser_part_free(ParserPart *part)
 {
   if (!part)

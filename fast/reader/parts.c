@@ -2,8 +2,9 @@
  * before the first sphere line, when they are short, are parsed first, as
  * the header part, whose materials every other part is given: their shapes
  * then find their materials at once. The shapes go in place to one array,
- * one slot a line, in 2 MB pages: each part writes its own stretch, and the
- * join moves nothing where a piece's lines are all shapes. */
+ * one slot a line, in 2 MB pages: each part writes its own stretch (the
+ * pieces' after the header's shapes), and the join moves nothing where a
+ * piece's lines are all shapes. */
 #define _GNU_SOURCE /* memmem */
 #include "reader/parts.h"
 
@@ -90,20 +91,25 @@ bool parts_load(const char *file, const char *text, size_t len, Scene *scene, in
   int n = h + cut_pieces(text, head, len, want, start + h);
   if (n - h < 2)
     return false;
-  /* first[k]: where part k's room starts, one slot a line */
-  int first[PARTS_PIECES_MAX + 2];
-  first[0] = 0;
+  /* lines[k]: piece k's lines, its room (one slot a line); first[k]: where
+   * the room starts, after the header's shapes (not its lines) */
+  int lines[PARTS_PIECES_MAX + 2], first[PARTS_PIECES_MAX + 2];
 #pragma omp parallel for schedule(dynamic, 1)
   for (int k = 0; k < n; k++)
-    first[k + 1] = count_lines(text + start[k], start[k + 1] - start[k]);
+    lines[k] = count_lines(text + start[k], start[k + 1] - start[k]);
+  int total = 0;
   for (int k = 0; k < n; k++)
-    first[k + 1] += first[k];
-  Instance *shapes = shapes_array(first[n]);
+    total += lines[k];
+  Instance *shapes = shapes_array(total);
   ParserPart *part[PARTS_PIECES_MAX + 2] = {NULL};
   if (!shapes)
     return false;
+  first[0] = 0;
   if (h)
-    part[0] = parser_part_parse(file, text, 0, start[1], NULL, shapes, first[1]);
+    part[0] = parser_part_parse(file, text, 0, start[1], NULL, shapes, lines[0]);
+  first[h] = h && part[0] ? parser_part_shapes(part[0]) : 0;
+  for (int k = h; k < n; k++)
+    first[k + 1] = first[k] + lines[k];
   /* A piece that fails (an error: the one-pass parse will say which) stops
    * the pieces not started yet. */
   int failed = h && !part[0];
@@ -115,7 +121,7 @@ bool parts_load(const char *file, const char *text, size_t len, Scene *scene, in
     if (stop)
       continue;
     part[k] = parser_part_parse(file, text, start[k], start[k + 1], h ? part[0] : NULL,
-                                shapes + first[k], first[k + 1] - first[k]);
+                                shapes + first[k], lines[k]);
     if (!part[k]) {
 #pragma omp atomic write
       failed = 1;
