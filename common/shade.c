@@ -1,10 +1,41 @@
-/* Scene.TraceRay and Render's body (steps 04, 06 and 08; common/shade.h):
- * the colour seen along a ray, through a film point, in a pixel.
- * docs/04-phong.md, docs/06-ambient.md, docs/08-area-lights.md. */
+/* Scene.TraceRay and PhongMaterial.Eval (steps 04, 06 and 08;
+ * common/shade.h): the colour seen along a ray, a light's term and the
+ * ambient term at its hit point, and Render's body for a film point and a
+ * pixel. docs/04-phong.md, docs/06-ambient.md, docs/08-area-lights.md. */
 #include "shade.h"
 
 #include "film.h"
 #include "scene.h"
+
+/* One light's term at the hit point seen from the direction v. */
+static vec3s shade_light(const Scene *scene, int k, const Hit *hit, vec3s v)
+{
+  /* BEGIN SOLUTION step 08 */
+  /* HINT: complete shade_light: an area light's term is shade_area's */
+  if (scene->lights[k].type == LIGHT_AREA)
+    return shade_area(scene, k, hit, v);
+  /* END SOLUTION */
+  vec3s l;
+  vec3s li = shade_incident(scene, &scene->lights[k], hit, &l);
+  return shade_phong_light(&scene->materials[hit->material], hit, v, li, l);
+}
+
+vec3s shade_phong(const Scene *scene, const Hit *hit, vec3s eye)
+{
+  vec3s c = glms_vec3_zero();
+  /* BEGIN SOLUTION step 06 */
+  /* HINT: complete shade_phong: the ambient term m_amb l_amb */
+  /* m_amb * l_amb: skipped when the scene has no ambient light at all. */
+  if (scene->info.ambient)
+    c = glms_vec3_mul(scene->materials[hit->material].ambient, scene->ambient);
+  /* END SOLUTION */
+  /* BEGIN SOLUTION step 04 */
+  vec3s v = glms_vec3_normalize(glms_vec3_sub(eye, hit->p));
+  for (int k = 0; k < scene->n_lights; k++)
+    c = glms_vec3_add(c, shade_light(scene, k, hit, v));
+  /* END SOLUTION */
+  return c;
+}
 
 vec3s shade_trace(const Scene *scene, Ray ray)
 {

@@ -1,5 +1,5 @@
-/* Unit tests of step 04's Phong region (shade_phong_light, shade_phong,
- * common/phong.c): hand-checkable configurations at the
+/* Unit tests of step 04's Phong regions (shade_phong_light, common/phong.c;
+ * shade_phong, common/shade.c): hand-checkable configurations at the
  * origin with normal +y, in a scene with nothing that could cast a shadow.
  * docs/04-phong.md, "What you write". */
 #include "check.h"

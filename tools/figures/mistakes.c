@@ -1,7 +1,7 @@
 /* Shadow tests the steps do not use: the lecture's closest-hit version (to
  * time it against step 05's any-hit query) and the typical mistakes pictured
  * in docs/05-shadows.md and docs/06-ambient.md. Not a step; shading as in
- * common/phong.c and shadow.c at step 06, only the visibility test changes.
+ * common/shade.c, phong.c and shadow.c at step 06, only the visibility test changes.
  * Usage: build/bin/mistakes VARIANT [the steps' options], VARIANT one of
  * lecture, closest, no-offset, epsilon=E, no-tmax, light-shadows. */
 #include "app/app.h"
