@@ -14,7 +14,8 @@ typedef struct Ray {
 
 struct Instance;
 
-/* What a closest-hit query returns. The normal always faces against the ray;
+/* What a closest-hit query returns, the lecture's Hit (position, normal,
+ * backfacing, material or light). The normal always faces against the ray;
  * `backface` says it was flipped (the ray came from inside or behind). */
 typedef struct Hit {
   float t;                     /* distance along the ray */
@@ -22,7 +23,11 @@ typedef struct Hit {
   vec3s n;                     /* unit normal, n . d <= 0 */
   float p_err;                 /* bound on the error of each coordinate of p */
   bool backface;               /* the ray hit the surface from behind */
-  const struct Instance *inst; /* what was hit (its material or light) */
+  int material;                /* the lit shape's material (Scene.materials),
+                                * -1 for a light's shape */
+  int light;                   /* the light whose shape was hit (Scene.lights),
+                                * -1 for a lit shape */
+  const struct Instance *inst; /* the instance hit (for the tools and tests) */
 } Hit;
 
 /* The point at distance t along the ray. */

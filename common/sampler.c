@@ -150,6 +150,19 @@ SamplerPattern sampler_pattern(SamplerKind kind, uint32_t seed, uint32_t pixel,
   return p;
 }
 
+SamplerPattern sampler_pattern_at(SamplerKind kind, uint32_t seed, uint32_t stream, vec3s p,
+                                  uint32_t count)
+{
+  uint32_t b[3];
+  memcpy(b, &p, sizeof b);
+  Rng r = rng_make(seed ^ (0x9e3779b9u * (stream + 1u)), b[0] ^ (b[2] * 0x85ebca77u), b[1]);
+  /* Two draws in a fixed order (C leaves the order of a call's arguments
+   * unspecified). */
+  uint32_t pixel = rng_next(&r);
+  uint32_t pattern_seed = rng_next(&r);
+  return sampler_pattern(kind, pattern_seed, pixel, count);
+}
+
 vec2s sampler_point(const SamplerPattern *p, uint32_t index)
 {
   vec2s s = {.x = 0.5f, .y = 0.5f};

@@ -45,6 +45,13 @@ typedef struct SamplerPattern {
 SamplerPattern sampler_pattern(SamplerKind kind, uint32_t seed, uint32_t pixel,
                                uint32_t count);
 
+/* The pattern of `count` samples for the point p in stream `stream` (step
+ * 08: an area light's index), keyed by `seed`, the stream and p's
+ * coordinates (their bits): each point draws a pattern of its own, the same
+ * whichever thread asks. */
+SamplerPattern sampler_pattern_at(SamplerKind kind, uint32_t seed, uint32_t stream, vec3s p,
+                                  uint32_t count);
+
 /* Sample `index` of the pattern: a point of [0,1)^2 inside the pixel, (0,0)
  * its bottom-left corner. Grid and jitter spread the `count` samples over
  * `count` cells of equal area 1/count (a k x k grid when count is a square;

@@ -189,6 +189,8 @@ static void instance_hit_fill(const Instance *inst, Ray r, float t, Hit *hit)
   case SHAPE_COUNT: break;
   }
 #undef HIT_FILL_
+  hit->material = inst->material;
+  hit->light = inst->light;
   hit->inst = inst;
 }
 

@@ -11,9 +11,10 @@
 
 /* flatten: every shading function shade_sample calls is compiled into it,
  * one body per camera sample (gcc and clang take the attribute from this
- * earlier declaration). Without it the compiler keeps shade_visible,
- * shade_incident and scene_intersect as calls, since the tracer and step
- * 08's shade_area call them too. */
+ * earlier declaration; with gcc's link-time optimisation, from phong.c,
+ * shadow.c and area_light.c too). Without it the compiler keeps
+ * shade_visible, shade_incident and scene_intersect as calls, since the
+ * tracer and step 08's shade_area call them too. */
 __attribute__((flatten)) vec3s shade_sample(const Scene *scene, float x, float y);
 
 #endif

@@ -24,7 +24,7 @@
 #
 # Not written yet. A step whose code (common/ and its own folder) still holds
 # a TODO(step NN) of its own is not run: its line reads
-#   TODO  06-ambient  not written yet: common/shade.c:94 still holds TODO(step 06)
+#   TODO  06-ambient  not written yet: common/shade.c:25 still holds TODO(step 06)
 # (the first such TODO), the stress tests of that step are left out, and so
 # are the tracer's tests of that step's program (RT_UNWRITTEN). Such a step
 # counts as failing in the exit status: the course is not done.

@@ -691,7 +691,7 @@ Test(accel, area_light_shadow_rays_give_the_plain_loops_answers)
         Ray cam = {.o = vec_make(uni(&g, -5, 5), 7, uni(&g, -5, 5)),
                    .d = glms_vec3_normalize(vec_make(uni(&g, -0.6f, 0.6f), -1, uni(&g, -0.6f, 0.6f)))};
         Hit hit;
-        if (!scene_intersect(&s, cam, INFINITY, &hit) || hit.inst->light >= 0)
+        if (!scene_intersect(&s, cam, INFINITY, &hit) || hit.light >= 0)
           continue;
         int ids[8];
         int shapes = accel_area_shapes(&s, ray_spawn(&hit, hit.n).o, q, ids, 8);

@@ -32,7 +32,7 @@ static Hit floor_hit(const Scene *s)
       floor = &s->instances[k];
   cr_assert(floor, "the test's scene has no plane");
   Hit h = {.t = 1.0f, .p = vec_make(0.0f, 0.0f, 0.0f), .n = vec_make(0.0f, 1.0f, 0.0f),
-           .p_err = 0.0f, .inst = floor};
+           .p_err = 0.0f, .material = floor->material, .light = floor->light, .inst = floor};
   return h;
 }
 

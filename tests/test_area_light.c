@@ -36,7 +36,8 @@ static void load(Scene *s, const char *lights)
 static Hit floor_hit(const Scene *s, float x, float z)
 {
   Hit h = {.t = 1.0f, .p = vec_make(x, 0.0f, z), .n = vec_make(0.0f, 1.0f, 0.0f),
-           .p_err = 1e-6f, .inst = &s->instances[0]};
+           .p_err = 1e-6f, .material = s->instances[0].material,
+           .light = s->instances[0].light, .inst = &s->instances[0]};
   return h;
 }
 
@@ -263,7 +264,8 @@ Test(area_light, point_behind_the_light_gets_nothing)
   load(&s, "light area corner -1 3 -1 edge1 2 0 0 edge2 0 0 2 power 6 6 6\n"
            "plane point 0 5 0 normal 0 -1 0 material white");
   Hit h = {.t = 1.0f, .p = vec_make(0.2f, 5.0f, 0.1f), .n = vec_make(0.0f, -1.0f, 0.0f),
-           .p_err = 1e-6f, .inst = &s.instances[1]};
+           .p_err = 1e-6f, .material = s.instances[1].material,
+           .light = s.instances[1].light, .inst = &s.instances[1]};
   cr_assert(s.instances[1].shape == SHAPE_PLANE);
   uint64_t rays;
   Check k = CHECK("shade_area", DOC_LIGHT);

@@ -1,5 +1,5 @@
-/* Unit tests of step 04's Phong region (shade_phong_light, shade_phong,
- * common/shade.c): hand-checkable configurations at the
+/* Unit tests of step 04's Phong regions (shade_phong_light, common/phong.c;
+ * shade_phong, common/shade.c): hand-checkable configurations at the
  * origin with normal +y, in a scene with nothing that could cast a shadow.
  * docs/04-phong.md, "What you write". */
 #include "check.h"
@@ -23,7 +23,7 @@ static double lobe_rel(float shininess)
 static Hit floor_hit(const Instance *inst)
 {
   Hit h = {.t = 1.0f, .p = vec_make(0, 0, 0), .n = vec_make(0, 1, 0), .p_err = 0.0f,
-           .inst = inst};
+           .material = inst->material, .light = inst->light, .inst = inst};
   return h;
 }
 

@@ -54,8 +54,9 @@ Test(scene, closest_hit_among_overlapping_spheres)
   CHECK_REQUIRE(&c, scene_intersect(&s, ray(0, 1, 0, 0, 0, -1), INFINITY, &h),
                 "ray from (0, 1, 0) along -z into three overlapping spheres: no hit found");
   CHECK_NEAR(&c, 8.0, h.t, 0.0, "ray from (0, 1, 0) along -z, nearest sphere front at z = -8: t");
-  CHECK_THAT(&c, h.inst->shape == SHAPE_SPHERE && h.inst->material == 1,
-             "the same ray: the instance hit must be a sphere, got shape %d", (int)h.inst->shape);
+  CHECK_THAT(&c, h.inst->shape == SHAPE_SPHERE && h.material == 1 && h.light == -1,
+             "the same ray: a sphere of material 1 must be hit, got shape %d, hit.material %d, "
+             "hit.light %d", (int)h.inst->shape, h.material, h.light);
   /* Slightly off axis (y = 1.5): the r 2 sphere's front is at
    * z = -10 + sqrt(4 - 0.25), the r 1 sphere's at -9 + sqrt(1 - 0.25), the
    * r 3 sphere's at -12 + sqrt(9 - 0.25): the nearest is the r 2 one. */
@@ -203,8 +204,8 @@ Test(scene, light_shapes_are_seen_but_never_occlude)
   Check c = CHECK(SPHERES, DOC);
   CHECK_REQUIRE(&c, scene_intersect(&s, ray(0, 0, 0, 0, 0, -1), INFINITY, &h),
                 "ray along -z toward a point light's sphere at z = -5: no hit found");
-  CHECK_THAT(&c, h.inst->light == 0 && h.inst->material == -1, "the same ray: the light's "
-             "sphere must be hit, got light %d, material %d", h.inst->light, h.inst->material);
+  CHECK_THAT(&c, h.light == 0 && h.material == -1, "the same ray: the light's "
+             "sphere must be hit, got hit.light %d, hit.material %d", h.light, h.material);
   CHECK_NEAR(&c, 4.5, h.t, 1e-6, "the same ray: t of the light's sphere (radius 0.5)");
   /* ... and the area light's quad (y = 2, x in [-1, 1], z in [-11, -9]). */
   cr_assert(scene_intersect(&s, ray(0, 0, -10, 0, 1, 0), INFINITY, &h),

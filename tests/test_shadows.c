@@ -21,7 +21,8 @@ static Hit floor_hit(const Scene *s, float x, float z)
       floor = &s->instances[k];
   cr_assert(floor, "the test's scene has no plane");
   Hit h = {.t = 1.0f, .p = vec_make(x, 0.0f, z), .n = vec_make(0.0f, 1.0f, 0.0f),
-           .p_err = 0.0f, .backface = false, .inst = floor};
+           .p_err = 0.0f, .backface = false, .material = floor->material,
+           .light = floor->light, .inst = floor};
   return h;
 }
 
@@ -362,7 +363,8 @@ Test(shadows, spawn_leaves_the_surface_past_the_error_box_on_the_side_of_the_dir
   };
   Check c = CHECK("ray_spawn", SPAWN_DOC);
   for (int k = 0; k < 3; k++) {
-    Hit h = {.t = 1.0f, .p = hits[k].p, .n = hits[k].n, .p_err = hits[k].p_err};
+    Hit h = {.t = 1.0f, .p = hits[k].p, .n = hits[k].n, .p_err = hits[k].p_err,
+             .material = 0, .light = -1};
     float n1 = vec_sum_abs(h.n);
     for (int side = 0; side < 2; side++) {
       vec3s dir = side == 0 ? glms_vec3_normalize(glms_vec3_add(h.n, vec_make(0.1f, 0, 0)))

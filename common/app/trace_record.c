@@ -33,14 +33,14 @@ static void sum_hit(Trace *t, const Hit *hit)
   film_accum_add(&t->normal, hit ? glms_vec3_scale(glms_vec3_adds(hit->n, 1.0f), 0.5f) : zero);
   if (hit) /* the depth is the mean over the rays that hit */
     film_accum_add(&t->depth, glms_vec3_broadcast(hit->t));
-  film_accum_add(&t->albedo, hit && hit->inst->material >= 0
-                                 ? t->plain.materials[hit->inst->material].diffuse : zero);
+  film_accum_add(&t->albedo, hit && hit->material >= 0
+                                 ? t->plain.materials[hit->material].diffuse : zero);
 }
 
 void trace_on_hit(Trace *t, const Hit *hit)
 {
-  t->lit = hit && hit->inst->material >= 0;
-  t->light_shape = hit ? hit->inst->light : -1;
+  t->lit = hit && hit->material >= 0;
+  t->light_shape = hit ? hit->light : -1;
   t->pending = t->lit;
   if (hit)
     t->hit = *hit;
@@ -136,7 +136,7 @@ static void replay_light(Trace *t, int k, vec3s v)
   t->replaying = false;
   for (int term = TERM_DIFFUSE; term <= TERM_SPECULAR; term++)
     c[term - TERM_DIFFUSE] =
-        shade_phong_light(&t->materials[term][hit->inst->material], hit, v, li, l);
+        shade_phong_light(&t->materials[term][hit->material], hit, v, li, l);
   on_light(t, k, li, l, c);
 }
 

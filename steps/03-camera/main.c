@@ -3,7 +3,6 @@
 #include "app/app.h"
 #include "film.h"
 #include "scene.h"
-#include "shapes.h" /* Instance, hit.inst */
 
 static vec3s pixel(const Scene *scene, const Film *film, int i, int j)
 {
@@ -12,7 +11,7 @@ static vec3s pixel(const Scene *scene, const Film *film, int i, int j)
   Hit hit;
   if (!scene_intersect(scene, r, INFINITY, &hit))
     return scene->background;
-  return scene->materials[hit.inst->material].diffuse;
+  return scene->materials[hit.material].diffuse;
 }
 
 int main(int argc, char **argv)

@@ -1,6 +1,6 @@
 /* Step 08, area lights: step 07's antialiased pixels, shaded with
  * parallelogram lights sampled as N point lights (soft shadows; shade_area,
- * common/shade.c). docs/08-area-lights.md. */
+ * common/area_light.c). docs/08-area-lights.md. */
 #include "antialias.h"
 #include "app/app.h"
 

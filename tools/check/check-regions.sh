@@ -36,8 +36,8 @@ TOGETHER=(
 # this table cannot rot.
 EXCEPTIONS=(
   "01 film_sample 07,08 steps 07 and 08 place their own samples inside the pixel (pixel_sampled, or square_mean's lattice points) and never call film_sample"
-  "02 sphere_hit_fill 03 step 03 draws each object in its flat colour: it needs which instance was hit (set outside the region), not the point or the normal"
-  "02 plane_hit_fill 03 step 03 draws each object in its flat colour: it needs which instance was hit (set outside the region), not the point or the normal"
+  "02 sphere_hit_fill 03 step 03 draws each object in its flat colour: it needs the material hit (hit.material, set outside the region), not the point or the normal"
+  "02 plane_hit_fill 03 step 03 draws each object in its flat colour: it needs the material hit (hit.material, set outside the region), not the point or the normal"
   "06 shade_trace 08 step 08's scene has no point light with a radius, so no light sphere for the camera to see"
 )
 
@@ -76,9 +76,10 @@ step_dir() { local s; for s in "${steps[@]}"; do [ "${s%%-*}" = "$1" ] && echo "
 # test_step NN LOG: `make test-step NN` in the scratch tree, with a TAP report
 # beside the log; returns make's exit status. A failing image test does not
 # render the Phong terms (RT_TERMS=0, tests/terms.h): only its verdict counts.
+# Every test runs (RT_CACHE=0): a reused result writes no TAP report.
 test_step() {
   rm -f "$2.tap"
-  RT_TERMS=0 CRITERION_OUTPUTS="tap:$2.tap" timeout 900 make -C "$tree" --no-print-directory \
+  RT_CACHE=0 RT_TERMS=0 CRITERION_OUTPUTS="tap:$2.tap" timeout 900 make -C "$tree" --no-print-directory \
     OPT="$SCRATCH_OPT" TEST_STEP_STRESS=0 test-step N="$1" >"$2" 2>&1
 }
 

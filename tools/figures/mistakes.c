@@ -1,13 +1,12 @@
 /* Shadow tests the steps do not use: the lecture's closest-hit version (to
  * time it against step 05's any-hit query) and the typical mistakes pictured
  * in docs/05-shadows.md and docs/06-ambient.md. Not a step; shading as in
- * common/shade.c at step 06, only the visibility test changes.
+ * common/shade.c, phong.c and shadow.c at step 06, only the visibility test changes.
  * Usage: build/bin/mistakes VARIANT [the steps' options], VARIANT one of
  * lecture, closest, no-offset, epsilon=E, no-tmax, light-shadows. */
 #include "app/app.h"
 #include "film.h"
 #include "scene.h"
-#include "shapes.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -46,7 +45,7 @@ static bool visible(const Scene *scene, int k, const Hit *hit, vec3s l, float di
      * shape), or nothing before it (a point light without a shape). */
     if (!scene_intersect(scene, r, INFINITY, &first))
       return true;
-    return first.inst->light == k || first.t >= tmax;
+    return first.light == k || first.t >= tmax;
   case NO_TMAX: return !scene_occluded(scene, r, INFINITY);
   case LIGHT_SHADOWS: return !scene_intersect(scene, r, tmax, &first);
   default: return !scene_occluded(scene, r, tmax);
@@ -56,7 +55,7 @@ static bool visible(const Scene *scene, int k, const Hit *hit, vec3s l, float di
 /* Step 06's Phong with ambient, the visibility test above. */
 static vec3s phong(const Scene *scene, const Hit *hit, vec3s eye)
 {
-  const Material *m = &scene->materials[hit->inst->material];
+  const Material *m = &scene->materials[hit->material];
   vec3s c = scene->info.ambient ? glms_vec3_mul(m->ambient, scene->ambient) : glms_vec3_zero();
   vec3s v = glms_vec3_normalize(glms_vec3_sub(eye, hit->p));
   for (int k = 0; k < scene->n_lights; k++) {
@@ -83,8 +82,8 @@ static vec3s pixel(const Scene *scene, const Film *film, int i, int j)
   Hit hit;
   if (!scene_intersect(scene, ray, INFINITY, &hit))
     return scene->background;
-  if (hit.inst->light >= 0)
-    return glms_vec3_divs(scene->lights[hit.inst->light].power, hit.t * hit.t);
+  if (hit.light >= 0)
+    return glms_vec3_divs(scene->lights[hit.light].power, hit.t * hit.t);
   return phong(scene, &hit, ray.o);
 }
 

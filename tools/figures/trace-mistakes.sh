@@ -25,11 +25,11 @@ mistakes() {
 01-film|steps/01-film/main.c|s/bottom = j < film->height \/ 2;/bottom = j >= film->height \/ 2;/|10 10|
 02-intersection|common/sphere.c|s/^    return t0;$/    return t1;/|47 150|normal
 03-camera|common/camera.c|s/cam->half_w = cam->half_h \* aspect;/cam->half_w = cam->half_h;/|127 100|normal
-04-phong|common/shade.c|s/glms_vec3_scale(glms_vec3_mul(m->specular, li), lobe)/glms_vec3_scale(m->specular, lobe)/|171 99|specular
+04-phong|common/phong.c|s/glms_vec3_scale(glms_vec3_mul(m->specular, li), lobe)/glms_vec3_scale(m->specular, lobe)/|171 99|specular
 05-shadows|common/ray.h|s/float push = 2.0f \* hit->p_err \* vec_sum_abs(hit->n);/float push = 0.0f;/|155 80|shadow
 06-ambient|common/shade.c|s/return glms_vec3_divs(light->power, hit.t \* hit.t);/return light->power;/|277 14|ambient
 07-antialiasing|common/antialias.c|s/vec3s lo = glms_vec3_broadcast(1.0f), hi = glms_vec3_zero();/vec3s lo = glms_vec3_zero(), hi = glms_vec3_broadcast(1.0f);/|250 200|samples
-08-area-lights|common/shade.c|s/cos_light \/ ((float)n \* r2)/1.0f \/ ((float)n * r2)/|96 160|diffuse
+08-area-lights|common/area_light.c|s/cos_light \/ ((float)n \* r2)/1.0f \/ ((float)n * r2)/|96 160|diffuse
 EOF
 }
 
