@@ -35,8 +35,8 @@ typedef struct ParserPart ParserPart;
 /* Parse the lines text[from, to) (of a text `file` names) into a part of
  * their own, as parser_load_text parses a whole text but for this:
  * - nothing is printed: NULL when the lines hold an error, more shapes than
- *   n_room or when memory runs out (parser_load_text of the whole text then
- *   says what is wrong);
+ *   n_room or when memory runs out (the one-pass parse of the whole text,
+ *   parser_load_whole, then says what is wrong);
  * - the part's shapes are written at room[0 .. n_room), at most one a line,
  *   an array the part does not own;
  * - the materials of `given` (NULL, or the part parsed from the text's
@@ -63,9 +63,9 @@ void parser_part_free(ParserPart *part);
  * down to follow the last part's, and nothing moves where the rooms were
  * full). `instances`: an array from malloc or aligned_alloc with room for
  * grow_capacity(N) (common/grow.h), N at least the end of the last room.
- * True: `scene` holds
- * the scene parser_load_whole makes of the whole text (instances in file
- * order, every value the same) and owns `instances`. False when the whole
+ * True: `scene` holds the scene parser_load_whole makes of the whole text
+ * (instances in file order, every value the same) and owns `instances`.
+ * False when the whole
  * text holds an error that no part alone shows (a material defined in two
  * parts, a once-statement in two, a material named nowhere defined) or
  * memory ran out: nothing printed, `scene` as it was, `instances` the
