@@ -65,11 +65,10 @@ void parser_part_free(ParserPart *part);
  * grow_capacity(N) (common/grow.h), N at least the end of the last room.
  * True: `scene` holds the scene parser_load_whole makes of the whole text
  * (instances in file order, every value the same) and owns `instances`.
- * False when the whole
- * text holds an error that no part alone shows (a material defined in two
- * parts, a once-statement in two, a material named nowhere defined) or
- * memory ran out: nothing printed, `scene` as it was, `instances` the
- * caller's. The parts are the caller's to free either way. */
+ * False when the whole text holds an error that no part alone shows (a
+ * material defined in two parts, a once-statement in two, a material named
+ * nowhere defined) or memory ran out: nothing printed, `scene` as it was,
+ * `instances` the caller's. The parts are the caller's to free either way. */
 bool parser_parts_join(ParserPart *const *parts, int n, struct Instance *instances,
                        Scene *scene);
 
