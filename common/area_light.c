@@ -1,9 +1,11 @@
-/* Area lights (step 08; common/shade.h): a parallelogram light as
+/* Area lights (step 08; common/area_light.h): a parallelogram light as
  * scene->light_samples point lights spread over it, each checked for
  * shadow. docs/08-area-lights.md. */
-#include "shade.h"
+#include "area_light.h"
 
+#include "phong.h"
 #include "scene.h"
+#include "shadow.h"
 
 /* BEGIN SOLUTION step 08 */
 /* The light's point (a, b) as a point light of power (P/n) cos(theta_light):

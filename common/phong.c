@@ -1,6 +1,6 @@
-/* Phong's reflection of one light (step 04; common/shade.h): the term
+/* Phong's reflection of one light (step 04; common/phong.h): the term
  * PhongMaterial.Eval adds for each light. docs/04-phong.md. */
-#include "shade.h"
+#include "phong.h"
 
 vec3s shade_phong_light(const Material *m, const Hit *hit, vec3s v, vec3s li, vec3s l)
 {

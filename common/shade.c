@@ -4,8 +4,11 @@
  * pixel. docs/04-phong.md, docs/06-ambient.md, docs/08-area-lights.md. */
 #include "shade.h"
 
+#include "area_light.h"
 #include "film.h"
+#include "phong.h"
 #include "scene.h"
+#include "shadow.h"
 
 /* One light's term at the hit point seen from the direction v. */
 static vec3s shade_light(const Scene *scene, int k, const Hit *hit, vec3s v)

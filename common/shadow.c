@@ -1,7 +1,7 @@
-/* Light.Radiance with shadows (steps 04 and 05; common/shade.h): the
+/* Light.Radiance with shadows (steps 04 and 05; common/shadow.h): the
  * radiance a point or directional light sends to a hit point, zero when
  * something lies between. docs/05-shadows.md. */
-#include "shade.h"
+#include "shadow.h"
 
 #include "scene.h"
 

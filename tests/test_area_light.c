@@ -4,6 +4,7 @@
  * against a point light, one-sidedness, light patterns keyed by the hit point
  * (also through the step's binary), and the radiance the camera sees. docs/08-area-lights.md. */
 #include "check.h"
+#include "area_light.h"
 #include "counting.h"
 
 #include <stdio.h>

@@ -3,6 +3,7 @@
  * origin with normal +y, in a scene with nothing that could cast a shadow.
  * docs/04-phong.md, "What you write". */
 #include "check.h"
+#include "phong.h"
 #include "scene.h"
 #include "shade.h"
 #include "shapes.h"

@@ -8,6 +8,7 @@
  * test of its own. docs/05-shadows.md, "What you write". */
 #include "check.h"
 #include "rng.h"
+#include "shadow.h"
 #include "shadow_scene.h"
 
 /* The hit the floor plane y = 0 (the scene's only plane) gives at (x, 0, z)

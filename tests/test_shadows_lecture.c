@@ -6,6 +6,7 @@
  * write". */
 #include "check.h"
 #include "rng.h"
+#include "shadow.h"
 #include "shadow_scene.h"
 
 /* Long double roots of the line o + t d (d unit) with instance `in`; their

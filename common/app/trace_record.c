@@ -6,7 +6,9 @@
  * docs/tracing.md. */
 #include "app/trace_record.h"
 
-#include "shade.h"
+#include "area_light.h"
+#include "phong.h"
+#include "shadow.h"
 
 static const char *const TERM_NAMES[] = {
     [TERM_AMBIENT] = "ambient", [TERM_DIFFUSE] = "diffuse", [TERM_SPECULAR] = "specular"};
