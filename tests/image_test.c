@@ -46,9 +46,9 @@ static const struct {
     {"04-phong", "light_incident, shade_phong_light, shade_phong", "docs/04-phong.md"},
     {"05-shadows", "shade_visible, ray_spawn", "docs/05-shadows.md"},
     {"06-ambient", "shade_phong, shade_trace", "docs/06-ambient.md"},
-    {"07-antialiasing", "pixel, pixel_sampled, square_mean, point_colour",
+    {"07-antialiasing", "antialias_pixel, pixel_sampled, square_mean, point_colour",
      "docs/07-antialiasing.md"},
-    {"08-area-lights", "shade_area, area_incident, light_pattern, shade_trace",
+    {"08-area-lights", "shade_area, area_incident, shade_light, shade_trace",
      "docs/08-area-lights.md"},
 };
 enum { N_STEPS = sizeof STEP_CODE / sizeof STEP_CODE[0] };

@@ -326,7 +326,7 @@ Test(area_light, light_samples_are_keyed_by_the_hit_point)
   Scene s;
   load(&s, "light area corner -1 3 -0.5 edge1 2 0 0 edge2 0 0.4 1 power 6 6 6");
   Hit h = floor_hit(&s, 0.4f, -0.3f);
-  Check k = CHECK("shade_area (light_pattern)", DOC_KEYS);
+  Check k = CHECK("shade_area (sampler_pattern_at)", DOC_KEYS);
   for (int kind = SAMPLER_RANDOM; kind < SAMPLER_COUNT; kind++) {
     double first = area(&s, &h, 9, 1, kind, NULL);
     int same_point = 0;
@@ -382,7 +382,7 @@ Test(area_light, each_camera_sample_takes_its_own_light_samples)
       free(rgb);
     }
   }
-  Check k = CHECK("shade_area (light_pattern)", DOC_KEYS);
+  Check k = CHECK("shade_area (sampler_pattern_at)", DOC_KEYS);
   for (int seed = 0; seed < 3; seed++) {
     double frac = red[1][seed] / red[0][seed];
     CHECK_THAT(&k, frac > 0.1 && frac < 0.9, "a pixel on a penumbra, 64 camera samples of 1 "
