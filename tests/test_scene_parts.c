@@ -156,6 +156,31 @@ Test(scene_parts, parts_cut_at_every_line_join_as_the_one_pass_parse)
   CHECK_DONE(&c);
 }
 
+/* A part holds at most the shapes its room has: one more, and its parse
+ * fails (quietly; the one-pass parse would then run), a room of none
+ * included. */
+Test(scene_parts, a_part_fails_when_its_room_is_full)
+{
+  static const char TEXT[] = "material red diffuse 1 0 0\n"
+                             "sphere center 0 0 -5 radius 1 material red\n"
+                             "sphere center 2 0 -5 radius 1 material red\n";
+  size_t len = sizeof TEXT - 1;
+  Instance room[2];
+  Check c = CHECK("parser_part_parse", DOC);
+  for (int n_room = 0; n_room <= 2; n_room++) {
+    ParserPart *part = parser_part_parse("t.scene", TEXT, 0, len, NULL,
+                                         n_room > 0 ? room : NULL, n_room);
+    if (n_room < 2)
+      CHECK_THAT(&c, part == NULL, "two spheres in a room of %d: the part must fail, got a part "
+                 "of %d shapes", n_room, part ? parser_part_shapes(part) : 0);
+    else
+      CHECK_THAT(&c, part && parser_part_shapes(part) == 2, "two spheres in a room of 2: "
+                 "a part of 2 shapes expected, got %d", part ? parser_part_shapes(part) : -1);
+    parser_part_free(part);
+  }
+  CHECK_DONE(&c);
+}
+
 /* Each wrong line after each line of the scene, the text cut before the
  * wrong line, after it, and far from it: the parts fail where the one-pass
  * parse fails (and where it does not: a later definition of a name nowhere

@@ -187,7 +187,7 @@ bool parser_place_shape(Parser *p, Instance *inst, const Token *name)
   }
   if (p->room == 0)
     return scene_add_instance(s, inst);
-  if (s->n_instances == p->room)
+  if (s->n_instances >= p->room) /* room -1: a part given none */
     return false;
   s->instances[s->n_instances++] = *inst;
   s->n_shapes = s->n_instances;

@@ -37,7 +37,8 @@ typedef struct Parser {
   int once_line[ONCE_COUNT]; /* where each once-statement was, 0: not yet */
   int room; /* 0: shapes go to the scene's growing array; > 0: a part of a
              * text (parser_part_parse), whose shapes go in place to
-             * scene->instances[0 .. room), an array it does not own */
+             * scene->instances[0 .. room), an array it does not own; -1: a
+             * part given no room, which fails at its first shape */
 } Parser;
 
 /* The scene's materials as records of the names table. */
